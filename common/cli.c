@@ -1,0 +1,665 @@
+/* cli.c: see cli.h.
+ *
+ * The arguments are read left to right, once. Each shared flag has a row in
+ * SHARED_FLAGS saying which group it belongs to; a lesson takes a flag only when
+ * it names that group. Checks that need two flags (--trace against the image
+ * size) wait until every flag has been read. */
+#include "cli.h"
+
+#include <ctype.h>
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "image.h"
+
+/* The camera that frames a mesh when the lesson has no scene to borrow one from:
+ * three units back along +Z, looking at the origin. */
+#define DEFAULT_EYE vec3(0, 0, 3)
+#define DEFAULT_TARGET vec3(0, 0, 0)
+#define DEFAULT_UP vec3(0, 1, 0)
+#define DEFAULT_FOVY 60.0
+#define DEFAULT_NEAR 0.1
+#define DEFAULT_FAR 100.0
+
+#define FOVY_MAX 180.0
+/* up is parallel to the view direction when the sine of the angle between them
+ * is below this: the camera's right axis (f x up) would be noise. */
+#define PARALLEL_SINE_MIN 1e-6
+/* A value quoted in a message is cut to this many characters. */
+#define QUOTE_MAX 48
+
+typedef enum {
+    FLAG_OUT, FLAG_WIDTH, FLAG_HEIGHT,
+    FLAG_SCENE, FLAG_OBJ,
+    FLAG_EYE, FLAG_TARGET, FLAG_UP, FLAG_FOVY, FLAG_NEAR, FLAG_FAR,
+    FLAG_SHADE, FLAG_DEPTH_OUT, FLAG_OVERDRAW_OUT, FLAG_TRACE, FLAG_ASCII,
+    FLAG_COMPARE, FLAG_STEPS,
+    FLAG_HELP, FLAG_VERSION,
+    SHARED_FLAG_COUNT
+} SharedFlagId;
+
+typedef struct {
+    const char *flag;
+    unsigned group;      /* CLI_* group; 0 for the flags every lesson takes */
+    const char *metavar; /* NULL for a switch */
+    const char *help;
+} SharedFlag;
+
+static const SharedFlag SHARED_FLAGS[SHARED_FLAG_COUNT] = {
+    [FLAG_OUT] = {"--out", 0, "FILE.png", "where the picture goes"},
+    [FLAG_WIDTH] = {"--width", 0, "N", "image width in pixels, 1 to 16384"},
+    [FLAG_HEIGHT] = {"--height", 0, "N", "image height in pixels, 1 to 16384"},
+    [FLAG_SCENE] = {"--scene", CLI_SCENE, "NAME", "a built-in scene to draw, listed below"},
+    [FLAG_OBJ] = {"--obj", CLI_SCENE, "FILE.obj", "draw the mesh of an OBJ file instead"},
+    [FLAG_EYE] = {"--eye", CLI_CAMERA, "X,Y,Z", "where the camera is"},
+    [FLAG_TARGET] = {"--target", CLI_CAMERA, "X,Y,Z", "the point it looks at"},
+    [FLAG_UP] = {"--up", CLI_CAMERA, "X,Y,Z", "which way is up on the screen"},
+    [FLAG_FOVY] = {"--fovy", CLI_CAMERA, "DEG", "vertical field of view, between 0 and 180"},
+    [FLAG_NEAR] = {"--near", CLI_CAMERA, "N", "distance of the near plane, above 0"},
+    [FLAG_FAR] = {"--far", CLI_CAMERA, "F", "distance of the far plane, beyond the near one"},
+    [FLAG_SHADE] = {"--shade", CLI_SHADE, "MODE", "flat, id (face index + 1) or depth"},
+    [FLAG_DEPTH_OUT] = {"--depth-out", CLI_DEPTH_OUT, "FILE.pfm",
+                        "also write the depth buffer, as view depth d"},
+    [FLAG_OVERDRAW_OUT] = {"--overdraw-out", CLI_OVERDRAW_OUT, "FILE.pgm",
+                           "also write how many fragments each pixel tested"},
+    [FLAG_TRACE] = {"--trace", CLI_TRACE, "X,Y", "log every fragment tested at pixel (X, Y)"},
+    [FLAG_ASCII] = {"--ascii", CLI_ASCII, NULL, "also print the buffer as text"},
+    [FLAG_COMPARE] = {"--compare", CLI_COMPARE, "REF.png",
+                      "compare the picture with REF.png (exit 3 if they differ)"},
+    [FLAG_STEPS] = {"--steps", CLI_STEPS, "DIR", "save a picture of every step into DIR"},
+    [FLAG_HELP] = {"--help", 0, NULL, "print this help and exit"},
+    [FLAG_VERSION] = {"--version", 0, NULL, "print the version and exit"},
+};
+
+/* Why a lesson that does not take a group's flags refuses them. */
+static const char *group_reason(unsigned group)
+{
+    switch (group) {
+    case CLI_SCENE: return "it draws its own scene only";
+    case CLI_CAMERA: return "it has no camera";
+    case CLI_SHADE: return "it has one way of shading";
+    case CLI_DEPTH_OUT: return "it writes no depth buffer";
+    case CLI_OVERDRAW_OUT: return "it counts no overdraw";
+    case CLI_TRACE: return "it traces no pixel";
+    case CLI_ASCII: return "it prints no text picture";
+    case CLI_COMPARE: return "it compares no pictures";
+    case CLI_STEPS: return "it saves no steps";
+    default: return "see --help";
+    }
+}
+
+static const char *const SHADE_NAMES[] = {[SHADE_FLAT] = "flat", [SHADE_ID] = "id",
+                                          [SHADE_DEPTH] = "depth"};
+#define SHADE_COUNT ((int)(sizeof SHADE_NAMES / sizeof SHADE_NAMES[0]))
+
+/* Lesson 01 draws one row of pixels: its --trace names a column only. */
+static bool trace_is_column(const LessonCli *spec)
+{
+    return !(spec->groups & CLI_SCENE);
+}
+
+static const char *flag_metavar(const LessonCli *spec, SharedFlagId id)
+{
+    return id == FLAG_TRACE && trace_is_column(spec) ? "X" : SHARED_FLAGS[id].metavar;
+}
+
+/* ---- Values ---------------------------------------------------------------- */
+
+/* s as it may appear in a message: a very long argument is cut, so that the
+ * message still ends with what is wrong with it. */
+static const char *quoted(const char *s, char buf[QUOTE_MAX + 4])
+{
+    size_t n = strlen(s);
+    if (n <= QUOTE_MAX)
+        return s;
+    memcpy(buf, s, QUOTE_MAX);
+    memcpy(buf + QUOTE_MAX, "...", 4);
+    return buf;
+}
+
+/* Shortest of %.15g / %.17g that reads back as v: 0.1 prints as 0.1. */
+static const char *number_text(double v, char buf[32])
+{
+    snprintf(buf, 32, "%.15g", v);
+    if (strtod(buf, NULL) != v)
+        snprintf(buf, 32, "%.17g", v);
+    return buf;
+}
+
+/* strtol/strtod skip leading blanks; a value that starts with one is refused. */
+static bool starts_like_number(const char *s)
+{
+    return *s != '\0' && !isspace((unsigned char)*s);
+}
+
+/* One finite number at the start of s; *end is where it stops. */
+static bool read_finite(const char *s, double *v, const char **end)
+{
+    if (!starts_like_number(s))
+        return false;
+    char *e;
+    double x = strtod(s, &e);
+    if (e == s || !isfinite(x))
+        return false;
+    *v = x;
+    *end = e;
+    return true;
+}
+
+/* One whole number at the start of s; out of the range of long it is clamped
+ * (*clamped set), so that a range check can still name it. */
+static bool read_whole(const char *s, long *v, const char **end, bool *clamped)
+{
+    if (!starts_like_number(s))
+        return false;
+    char *e;
+    errno = 0;
+    long x = strtol(s, &e, 10);
+    if (e == s)
+        return false;
+    *clamped = errno == ERANGE;
+    *v = x;
+    *end = e;
+    return true;
+}
+
+bool parse_int(const char *flag, const char *s, long lo, long hi, long *out, Error *err)
+{
+    char q[QUOTE_MAX + 4];
+    long v;
+    const char *end;
+    bool clamped;
+    if (!read_whole(s, &v, &end, &clamped) || *end != '\0')
+        return error_set(err, "%s: '%s' is not a whole number", flag, quoted(s, q));
+    if (clamped || v < lo || v > hi)
+        return error_set(err, "%s: %s is out of range (%ld to %ld)", flag, quoted(s, q), lo, hi);
+    *out = v;
+    return true;
+}
+
+bool parse_double(const char *flag, const char *s, double *out, Error *err)
+{
+    char q[QUOTE_MAX + 4];
+    double v;
+    const char *end;
+    if (!read_finite(s, &v, &end) || *end != '\0')
+        return error_set(err, "%s: '%s' is not a finite number", flag, quoted(s, q));
+    *out = v;
+    return true;
+}
+
+bool parse_vec3(const char *flag, const char *s, Vec3 *out, Error *err)
+{
+    char q[QUOTE_MAX + 4];
+    double c[3];
+    const char *p = s;
+    for (int k = 0; k < 3; k++) {
+        const char *end;
+        char separator = k < 2 ? ',' : '\0';
+        if (!read_finite(p, &c[k], &end) || *end != separator)
+            return error_set(err, "%s: '%s' is not three finite numbers X,Y,Z", flag,
+                             quoted(s, q));
+        p = end + 1;
+    }
+    *out = vec3(c[0], c[1], c[2]);
+    return true;
+}
+
+/* ---- Reading the command line ----------------------------------------------- */
+
+typedef struct {
+    const LessonCli *spec;
+    Options *opt;
+    Error *err;
+    int argc;
+    char **argv;
+    int next;                          /* index of the next argument to read */
+    bool seen[SHARED_FLAG_COUNT];
+    bool extra_seen[CLI_MAX_EXTRA];
+    long trace_x, trace_y;             /* as given; checked against the image size last */
+} Parser;
+
+static int shared_flag_id(const char *arg)
+{
+    for (int id = 0; id < SHARED_FLAG_COUNT; id++)
+        if (strcmp(arg, SHARED_FLAGS[id].flag) == 0)
+            return id;
+    return -1;
+}
+
+static int extra_count(const LessonCli *spec)
+{
+    return spec->n_extra < CLI_MAX_EXTRA ? spec->n_extra : CLI_MAX_EXTRA;
+}
+
+static int extra_flag_index(const LessonCli *spec, const char *arg)
+{
+    for (int i = 0; i < extra_count(spec); i++)
+        if (strcmp(arg, spec->extra[i].flag) == 0)
+            return i;
+    return -1;
+}
+
+/* Marks flag as seen (refusing a second time) and, for a flag with a value,
+ * takes the next argument. A value may start with '-' (--eye -1,2,3) but not
+ * with "--": that is the next flag, and this one's value is missing. */
+static bool take_flag(Parser *p, const char *flag, bool *seen, bool has_value, const char **value)
+{
+    if (*seen)
+        return error_set(p->err, "%s given twice", flag);
+    *seen = true;
+    *value = "";
+    if (!has_value)
+        return true;
+    if (p->next >= p->argc || strncmp(p->argv[p->next], "--", 2) == 0)
+        return error_set(p->err, "%s needs a value", flag);
+    *value = p->argv[p->next++];
+    return true;
+}
+
+static bool set_path(const char *flag, const char *value, const char *what, const char **out,
+                     Error *err)
+{
+    if (*value == '\0')
+        return error_set(err, "%s: the %s name is empty", flag, what);
+    *out = value;
+    return true;
+}
+
+static bool set_size(const char *flag, const char *value, int *out, Error *err)
+{
+    long n;
+    if (!parse_int(flag, value, 1, IMAGE_MAX_SIDE, &n, err))
+        return false;
+    *out = (int)n;
+    return true;
+}
+
+static bool set_double(const char *flag, const char *value, double *out, bool *set, Error *err)
+{
+    *set = true;
+    return parse_double(flag, value, out, err);
+}
+
+static bool set_vec3(const char *flag, const char *value, Vec3 *out, bool *set, Error *err)
+{
+    *set = true;
+    return parse_vec3(flag, value, out, err);
+}
+
+/* "--scene: no scene named 'x' (known: a, b, c)" */
+static bool set_scene(Parser *p, const char *value)
+{
+    if (p->seen[FLAG_OBJ])
+        return error_set(p->err, "--scene and --obj cannot be used together");
+    const SceneInfo *scene = scene_find(value);
+    if (scene) {
+        p->opt->scene = scene->name;
+        p->opt->obj = NULL;
+        return true;
+    }
+    char known[ERROR_MSG_MAX] = "", q[QUOTE_MAX + 4];
+    size_t used = 0;
+    for (int i = 0; i < scene_count() && used < sizeof known; i++) {
+        int n = snprintf(known + used, sizeof known - used, "%s%s", i ? ", " : "",
+                         scene_at(i)->name);
+        used += n > 0 ? (size_t)n : 0;
+    }
+    return error_set(p->err, "--scene: no scene named '%s' (known: %s)", quoted(value, q), known);
+}
+
+static bool set_obj(Parser *p, const char *value)
+{
+    if (p->seen[FLAG_SCENE])
+        return error_set(p->err, "--scene and --obj cannot be used together");
+    if (!set_path("--obj", value, "file", &p->opt->obj, p->err))
+        return false;
+    p->opt->scene = NULL; /* the mesh replaces the lesson's default scene */
+    return true;
+}
+
+static bool set_shade(Parser *p, const char *value)
+{
+    for (int mode = 0; mode < SHADE_COUNT; mode++)
+        if (strcmp(value, SHADE_NAMES[mode]) == 0) {
+            p->opt->shade = (ShadeMode)mode;
+            return true;
+        }
+    char q[QUOTE_MAX + 4];
+    return error_set(p->err, "--shade: '%s' is not one of flat, id, depth", quoted(value, q));
+}
+
+/* "X,Y", or "X" alone for a lesson that draws one row. The range is checked
+ * once --width and --height are known (check_trace). */
+static bool set_trace(Parser *p, const char *value)
+{
+    char q[QUOTE_MAX + 4];
+    bool column = trace_is_column(p->spec), clamped;
+    const char *end;
+    p->opt->trace_set = true;
+    p->trace_y = 0;
+    if (column) {
+        if (!read_whole(value, &p->trace_x, &end, &clamped) || *end != '\0')
+            return error_set(p->err, "--trace: '%s' is not a column X (a whole number)",
+                             quoted(value, q));
+        return true;
+    }
+    if (!read_whole(value, &p->trace_x, &end, &clamped) || *end != ',' ||
+        !read_whole(end + 1, &p->trace_y, &end, &clamped) || *end != '\0')
+        return error_set(p->err, "--trace: '%s' is not a pixel X,Y (two whole numbers)",
+                         quoted(value, q));
+    return true;
+}
+
+static bool apply_shared_flag(Parser *p, SharedFlagId id, const char *value)
+{
+    Options *o = p->opt;
+    Error *err = p->err;
+    const char *flag = SHARED_FLAGS[id].flag;
+    switch (id) {
+    case FLAG_OUT: return set_path(flag, value, "file", &o->out, err);
+    case FLAG_WIDTH: return set_size(flag, value, &o->width, err);
+    case FLAG_HEIGHT: return set_size(flag, value, &o->height, err);
+    case FLAG_SCENE: return set_scene(p, value);
+    case FLAG_OBJ: return set_obj(p, value);
+    case FLAG_EYE: return set_vec3(flag, value, &o->eye, &o->eye_set, err);
+    case FLAG_TARGET: return set_vec3(flag, value, &o->target, &o->target_set, err);
+    case FLAG_UP: return set_vec3(flag, value, &o->up, &o->up_set, err);
+    case FLAG_FOVY: return set_double(flag, value, &o->fovy, &o->fovy_set, err);
+    case FLAG_NEAR: return set_double(flag, value, &o->near, &o->near_set, err);
+    case FLAG_FAR: return set_double(flag, value, &o->far, &o->far_set, err);
+    case FLAG_SHADE: return set_shade(p, value);
+    case FLAG_DEPTH_OUT: return set_path(flag, value, "file", &o->depth_out, err);
+    case FLAG_OVERDRAW_OUT: return set_path(flag, value, "file", &o->overdraw_out, err);
+    case FLAG_TRACE: return set_trace(p, value);
+    case FLAG_ASCII: o->ascii = true; return true;
+    case FLAG_COMPARE: return set_path(flag, value, "file", &o->compare, err);
+    case FLAG_STEPS: return set_path(flag, value, "directory", &o->steps_dir, err);
+    case FLAG_HELP: case FLAG_VERSION: case SHARED_FLAG_COUNT: break;
+    }
+    return true;
+}
+
+/* "--trace: pixel (900,3) is outside the 800x600 image" */
+static bool check_trace(Parser *p)
+{
+    Options *o = p->opt;
+    if (!o->trace_set)
+        return true;
+    bool inside = p->trace_x >= 0 && p->trace_x < o->width && p->trace_y >= 0 &&
+                  p->trace_y < o->height;
+    if (!inside) {
+        if (trace_is_column(p->spec))
+            return error_set(p->err, "--trace: column %ld is outside the %d-pixel-wide image",
+                             p->trace_x, o->width);
+        return error_set(p->err, "--trace: pixel (%ld,%ld) is outside the %dx%d image",
+                         p->trace_x, p->trace_y, o->width, o->height);
+    }
+    o->trace_x = (int)p->trace_x;
+    o->trace_y = (int)p->trace_y;
+    return true;
+}
+
+static void print_version(const LessonCli *spec)
+{
+    printf("%s (hidden-surface lessons) %s\n", spec->program, SERIES_VERSION);
+}
+
+/* Reads one argument (and its value). CLI_CONTINUE to go on, else the status. */
+static int read_argument(Parser *p)
+{
+    const LessonCli *spec = p->spec;
+    const char *arg = p->argv[p->next++], *value;
+    char q[QUOTE_MAX + 4];
+    if (arg[0] != '-' || arg[1] == '\0') {
+        error_set(p->err, "unexpected argument '%s'", quoted(arg, q));
+        return EXIT_USAGE;
+    }
+
+    int id = shared_flag_id(arg);
+    if (id == FLAG_HELP) {
+        cli_print_help(spec, stdout);
+        return EXIT_OK;
+    }
+    if (id == FLAG_VERSION) {
+        print_version(spec);
+        return EXIT_OK;
+    }
+    if (id >= 0) {
+        const SharedFlag *f = &SHARED_FLAGS[id];
+        if (f->group && !(spec->groups & f->group)) {
+            error_set(p->err, "%s does not apply to %s (%s)", f->flag, spec->program,
+                      group_reason(f->group));
+            return EXIT_USAGE;
+        }
+        if (!take_flag(p, f->flag, &p->seen[id], f->metavar != NULL, &value) ||
+            !apply_shared_flag(p, (SharedFlagId)id, value))
+            return EXIT_USAGE;
+        return CLI_CONTINUE;
+    }
+
+    int i = extra_flag_index(spec, arg);
+    if (i >= 0) {
+        const LessonFlag *f = &spec->extra[i];
+        if (!take_flag(p, f->flag, &p->extra_seen[i], f->metavar != NULL, &value))
+            return EXIT_USAGE;
+        p->opt->extra[i] = value; /* "" for a switch */
+        return CLI_CONTINUE;
+    }
+
+    error_set(p->err, "unknown flag '%s' (try --help)", quoted(arg, q));
+    return EXIT_USAGE;
+}
+
+int cli_parse_quiet(const LessonCli *spec, int argc, char **argv, Options *opt, Error *err)
+{
+    Error local;
+    Parser p = {.spec = spec, .opt = opt, .err = err ? err : &local, .argc = argc,
+                .argv = argv, .next = 1};
+    *opt = spec->defaults;
+    while (p.next < argc) {
+        int status = read_argument(&p);
+        if (status != CLI_CONTINUE)
+            return status;
+    }
+    if (!check_trace(&p))
+        return EXIT_USAGE;
+    return CLI_CONTINUE;
+}
+
+int cli_parse(const LessonCli *spec, int argc, char **argv, Options *opt)
+{
+    Error err;
+    int status = cli_parse_quiet(spec, argc, argv, opt, &err);
+    if (status == EXIT_USAGE)
+        return error_report(spec->program, &err, EXIT_USAGE);
+    return status;
+}
+
+/* ---- --help ----------------------------------------------------------------- */
+
+static bool takes_flag(const LessonCli *spec, SharedFlagId id)
+{
+    return SHARED_FLAGS[id].group == 0 || (spec->groups & SHARED_FLAGS[id].group);
+}
+
+static int flag_column_width(const LessonCli *spec)
+{
+    int widest = 0;
+    for (int id = 0; id < SHARED_FLAG_COUNT; id++) {
+        const char *mv = flag_metavar(spec, (SharedFlagId)id);
+        int w = (int)strlen(SHARED_FLAGS[id].flag) + (mv ? 1 + (int)strlen(mv) : 0);
+        if (takes_flag(spec, (SharedFlagId)id) && w > widest)
+            widest = w;
+    }
+    for (int i = 0; i < extra_count(spec); i++) {
+        const LessonFlag *f = &spec->extra[i];
+        int w = (int)strlen(f->flag) + (f->metavar ? 1 + (int)strlen(f->metavar) : 0);
+        if (w > widest)
+            widest = w;
+    }
+    return widest + 2;
+}
+
+static void print_flag(FILE *out, int column, const char *flag, const char *metavar,
+                       const char *help, const char *default_text)
+{
+    char name[128];
+    snprintf(name, sizeof name, "%s%s%s", flag, metavar ? " " : "", metavar ? metavar : "");
+    fprintf(out, "  %-*s%s%s\n", column, name, help, default_text);
+}
+
+/* " (default: ...)" for the flags whose default the lesson chose. */
+static const char *default_text(const LessonCli *spec, SharedFlagId id, char buf[160])
+{
+    const Options *d = &spec->defaults;
+    buf[0] = '\0';
+    switch (id) {
+    case FLAG_OUT:
+        if (d->out)
+            snprintf(buf, 160, " (default: %s)", d->out);
+        break;
+    case FLAG_WIDTH: snprintf(buf, 160, " (default: %d)", d->width); break;
+    case FLAG_HEIGHT: snprintf(buf, 160, " (default: %d)", d->height); break;
+    case FLAG_SCENE:
+        if (d->scene)
+            snprintf(buf, 160, " (default: %s)", d->scene);
+        break;
+    case FLAG_EYE:
+        if (spec->groups & CLI_SCENE)
+            snprintf(buf, 160, " (default: the scene's camera)");
+        break;
+    case FLAG_SHADE:
+        if ((int)d->shade >= 0 && (int)d->shade < SHADE_COUNT)
+            snprintf(buf, 160, " (default: %s)", SHADE_NAMES[d->shade]);
+        break;
+    default: break;
+    }
+    return buf;
+}
+
+void cli_print_help(const LessonCli *spec, FILE *out)
+{
+    int column = flag_column_width(spec);
+    char buf[160];
+    fprintf(out, "Usage: %s [options]\n", spec->program);
+    if (spec->purpose)
+        fprintf(out, "%s\n", spec->purpose);
+
+    fprintf(out, "\nOptions:\n");
+    for (int id = 0; id < SHARED_FLAG_COUNT; id++) {
+        if (!takes_flag(spec, (SharedFlagId)id))
+            continue;
+        const char *help = SHARED_FLAGS[id].help;
+        if (id == FLAG_TRACE && trace_is_column(spec))
+            help = "log every fragment tested at column X";
+        print_flag(out, column, SHARED_FLAGS[id].flag, flag_metavar(spec, (SharedFlagId)id),
+                   help, default_text(spec, (SharedFlagId)id, buf));
+    }
+
+    if (extra_count(spec) > 0) {
+        fprintf(out, "\nOptions of this lesson:\n");
+        for (int i = 0; i < extra_count(spec); i++)
+            print_flag(out, column, spec->extra[i].flag, spec->extra[i].metavar,
+                       spec->extra[i].help ? spec->extra[i].help : "", "");
+    }
+
+    if (spec->groups & CLI_SCENE) {
+        fprintf(out, "\nScenes:\n");
+        for (int i = 0; i < scene_count(); i++)
+            print_flag(out, column, scene_at(i)->name, NULL, scene_at(i)->about, "");
+    }
+
+    fprintf(out, "\nExit status:\n"
+                 "  0  success\n"
+                 "  1  failure while running: a missing file, a malformed OBJ line,"
+                 " an unwritable output\n"
+                 "  2  bad command line\n");
+    if (spec->groups & CLI_COMPARE)
+        fprintf(out, "  3  --compare found a difference\n");
+}
+
+/* ---- The camera ---------------------------------------------------------------- */
+
+/* Camera flags not given come from the scene, or from the default camera. */
+static void fill_camera(Options *o, const SceneInfo *scene)
+{
+    if (!o->eye_set)
+        o->eye = scene ? scene->eye : DEFAULT_EYE;
+    if (!o->target_set)
+        o->target = scene ? scene->target : DEFAULT_TARGET;
+    if (!o->up_set)
+        o->up = scene ? scene->up : DEFAULT_UP;
+    if (!o->fovy_set)
+        o->fovy = scene ? scene->fovy : DEFAULT_FOVY;
+    if (!o->near_set)
+        o->near = scene ? scene->near : DEFAULT_NEAR;
+    if (!o->far_set)
+        o->far = scene ? scene->far : DEFAULT_FAR;
+}
+
+/* 0 < fovy < 180, 0 < near < far. */
+static bool check_lens(const Options *o, Error *err)
+{
+    char a[32], b[32];
+    if (!(o->fovy > 0 && o->fovy < FOVY_MAX))
+        return error_set(err, "--fovy: %s is out of range (0 < fovy < 180 degrees)",
+                         number_text(o->fovy, a));
+    if (!(o->near > 0))
+        return error_set(err, "--near: %s is out of range (near must be greater than 0)",
+                         number_text(o->near, a));
+    if (!(o->far > o->near))
+        return error_set(err, "--far: %s is out of range (far must be greater than near, %s)",
+                         number_text(o->far, a), number_text(o->near, b));
+    return true;
+}
+
+/* eye != target, up not parallel to target - eye: otherwise look_at has no
+ * direction to look in, or no way to tell right from left. */
+static bool check_orientation(const Options *o, Error *err)
+{
+    Vec3 dir = vec3_sub(o->target, o->eye);
+    double dir_len = vec3_length(dir), up_len = vec3_length(o->up);
+    if (dir_len == 0)
+        return error_set(err, "--eye and --target are the same point");
+    if (!isfinite(dir_len))
+        return error_set(err, "--eye and --target are too far apart");
+    if (up_len == 0)
+        return error_set(err, "--up is the zero vector");
+    if (!isfinite(up_len))
+        return error_set(err, "--up is too long");
+    /* |dir x up| = |dir| |up| sin(angle) */
+    double sine = vec3_length(vec3_cross(vec3_scale(dir, 1 / dir_len),
+                                         vec3_scale(o->up, 1 / up_len)));
+    if (!(sine >= PARALLEL_SINE_MIN))
+        return error_set(err, "--up is parallel to the view direction from --eye to --target");
+    return true;
+}
+
+static bool matrix_is_finite(Mat4 m)
+{
+    for (int r = 0; r < 4; r++)
+        for (int c = 0; c < 4; c++)
+            if (!isfinite(m.m[r][c]))
+                return false;
+    return true;
+}
+
+/* Extreme but finite values can still overflow while the matrices are built. */
+static bool check_matrices(const Options *o, Error *err)
+{
+    if (!matrix_is_finite(look_at(o->eye, o->target, o->up)))
+        return error_set(err, "--eye and --target are too far from the origin");
+    double aspect = (double)o->width / o->height;
+    if (!matrix_is_finite(perspective(o->fovy, aspect, o->near, o->far)))
+        return error_set(err, "--fovy, --near and --far give a projection too large to compute");
+    return true;
+}
+
+bool cli_resolve_camera(Options *opt, const SceneInfo *scene, Error *err)
+{
+    fill_camera(opt, scene);
+    return check_lens(opt, err) && check_orientation(opt, err) && check_matrices(opt, err);
+}

@@ -1,0 +1,371 @@
+/* image.c: see image.h.
+ *
+ * Every writer builds its bytes into an AtomicFile (file.h), so a failed write
+ * never leaves a truncated picture behind. Multi-byte numbers are written one
+ * byte at a time in the order the format asks for, so the files are the same
+ * on any machine. */
+#include "image.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+#include "file.h"
+
+#define RGB_CHANNELS 3
+
+const Rgb DEPTH_BACKGROUND = {24, 32, 64}; /* dark blue: no grey looks like it */
+
+/* depth_to_grey: the nearest depth is white, the farthest a dark grey that
+ * still stands out from black and from the background. */
+#define GREY_NEAR 255
+#define GREY_FAR 48
+
+/* PFM: "Pf" is one grey channel; a negative scale means little-endian. */
+#define PFM_HEADER_MAX 128
+#define PGM16_MAX_VALUE 65535
+
+static bool size_in_range(int width, int height)
+{
+    return width >= 1 && width <= IMAGE_MAX_SIDE && height >= 1 && height <= IMAGE_MAX_SIDE;
+}
+
+static bool size_error(Error *err, int width, int height)
+{
+    return error_set(err, "image size %dx%d is out of range (1 to %d)",
+                     width, height, IMAGE_MAX_SIDE);
+}
+
+bool image_init(Image *im, int width, int height, Error *err)
+{
+    im->width = 0;
+    im->height = 0;
+    im->rgb = NULL;
+    if (!size_in_range(width, height))
+        return size_error(err, width, height);
+    /* At most 16384 * 16384 pixels: the count fits a size_t, and calloc
+     * checks the multiplication by 3 itself. */
+    size_t pixels = (size_t)width * (size_t)height;
+    im->rgb = calloc(pixels, RGB_CHANNELS);
+    if (!im->rgb)
+        return error_set(err, "out of memory for a %dx%d image", width, height);
+    im->width = width;
+    im->height = height;
+    return true;
+}
+
+void image_free(Image *im)
+{
+    free(im->rgb);
+    im->rgb = NULL;
+    im->width = 0;
+    im->height = 0;
+}
+
+void image_fill(Image *im, Rgb c)
+{
+    for (int y = 0; y < im->height; y++)
+        for (int x = 0; x < im->width; x++)
+            image_set(im, x, y, c);
+}
+
+/* ---- PNG ---- */
+
+/* stb_image_write hands its output over in pieces: append each to the file. */
+static void write_to_atomic_file(void *context, void *data, int size)
+{
+    atomic_write(context, data, (size_t)size);
+}
+
+bool image_write_png(const Image *im, const char *path, Error *err)
+{
+    if (!im->rgb || !size_in_range(im->width, im->height))
+        return error_set(err, "cannot write %s: the image is empty", path);
+    AtomicFile f;
+    if (!atomic_open(&f, path, err))
+        return false;
+    /* Row 0 is the top row in memory and in a PNG: no flip. */
+    int row_bytes = im->width * RGB_CHANNELS;
+    if (!stbi_write_png_to_func(write_to_atomic_file, &f, im->width, im->height,
+                                RGB_CHANNELS, im->rgb, row_bytes)) {
+        atomic_abort(&f);
+        return error_set(err, "cannot write %s: out of memory while encoding the PNG", path);
+    }
+    return atomic_commit(&f, err);
+}
+
+bool image_read_png(Image *im, const char *path, Error *err)
+{
+    im->width = 0;
+    im->height = 0;
+    im->rgb = NULL;
+    FILE *fp = fopen(path, "rb");
+    if (!fp)
+        return error_set(err, "cannot read %s: %s", path, strerror(errno));
+    int width, height, channels_in_file;
+    /* Asking for 3 channels converts grey, palette and alpha PNGs to RGB. */
+    unsigned char *pixels = stbi_load_from_file(fp, &width, &height, &channels_in_file,
+                                                RGB_CHANNELS);
+    fclose(fp);
+    if (!pixels)
+        return error_set(err, "cannot read %s: not a readable PNG (%s)", path,
+                         stbi_failure_reason());
+    bool ok = size_in_range(width, height);
+    if (!ok)
+        error_set(err, "cannot read %s: image size %dx%d is out of range (1 to %d)",
+                  path, width, height, IMAGE_MAX_SIDE);
+    else if (image_init(im, width, height, err))
+        memcpy(im->rgb, pixels, (size_t)width * (size_t)height * RGB_CHANNELS);
+    else
+        ok = false;
+    stbi_image_free(pixels);
+    return ok;
+}
+
+/* ---- PFM ---- */
+
+static void put_float_le(uint8_t *out, float v)
+{
+    uint32_t bits;
+    memcpy(&bits, &v, sizeof bits);
+    out[0] = (uint8_t)(bits & 0xff);
+    out[1] = (uint8_t)((bits >> 8) & 0xff);
+    out[2] = (uint8_t)((bits >> 16) & 0xff);
+    out[3] = (uint8_t)(bits >> 24);
+}
+
+static float get_float(const uint8_t *in, bool little_endian)
+{
+    uint32_t bits = little_endian
+        ? (uint32_t)in[0] | (uint32_t)in[1] << 8 | (uint32_t)in[2] << 16 | (uint32_t)in[3] << 24
+        : (uint32_t)in[3] | (uint32_t)in[2] << 8 | (uint32_t)in[1] << 16 | (uint32_t)in[0] << 24;
+    float v;
+    memcpy(&v, &bits, sizeof v);
+    return v;
+}
+
+bool write_pfm(const float *values, int width, int height, const char *path, Error *err)
+{
+    if (!size_in_range(width, height))
+        return size_error(err, width, height);
+    size_t row_bytes = (size_t)width * sizeof(float);
+    uint8_t *row = malloc(row_bytes);
+    if (!row)
+        return error_set(err, "cannot write %s: out of memory", path);
+    AtomicFile f;
+    if (!atomic_open(&f, path, err)) {
+        free(row);
+        return false;
+    }
+    char header[PFM_HEADER_MAX];
+    int n = snprintf(header, sizeof header, "Pf\n%d %d\n-1.0\n", width, height);
+    atomic_write(&f, header, (size_t)n);
+    /* The PFM format stores the bottom row first. */
+    for (int y = height - 1; y >= 0; y--) {
+        const float *src = values + (size_t)y * (size_t)width;
+        for (int x = 0; x < width; x++)
+            put_float_le(row + (size_t)x * sizeof(float), src[x]);
+        atomic_write(&f, row, row_bytes);
+    }
+    free(row);
+    return atomic_commit(&f, err);
+}
+
+static bool is_pnm_space(char c)
+{
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
+
+/* Reads a positive decimal number after optional white space; false if none. */
+static bool parse_side(const char **p, const char *end, int *out)
+{
+    while (*p < end && is_pnm_space(**p))
+        (*p)++;
+    long v = 0;
+    const char *start = *p;
+    while (*p < end && **p >= '0' && **p <= '9' && v <= IMAGE_MAX_SIDE) {
+        v = v * 10 + (**p - '0');
+        (*p)++;
+    }
+    if (*p == start)
+        return false;
+    *out = v > IMAGE_MAX_SIDE ? IMAGE_MAX_SIDE + 1 : (int)v;
+    return true;
+}
+
+bool read_pfm(float **values, int *width, int *height, const char *path, Error *err)
+{
+    *values = NULL;
+    *width = 0;
+    *height = 0;
+    char *data;
+    size_t len;
+    size_t max_bytes = PFM_HEADER_MAX +
+        (size_t)IMAGE_MAX_SIDE * (size_t)IMAGE_MAX_SIDE * sizeof(float);
+    if (!read_file(path, max_bytes, &data, &len, err))
+        return false;
+    const char *end = data + len;
+    const char *p = data;
+    int w = 0, h = 0;
+    bool ok = true;
+    if (len < 2 || data[0] != 'P' || (data[1] != 'f' && data[1] != 'F')) {
+        ok = error_set(err, "cannot read %s: not a PFM file (it should start with \"Pf\")", path);
+    } else if (data[1] == 'F') {
+        ok = error_set(err, "cannot read %s: a colour PFM (\"PF\"); only grey (\"Pf\") is read", path);
+    } else {
+        p += 2;
+        if (!parse_side(&p, end, &w) || !parse_side(&p, end, &h))
+            ok = error_set(err, "cannot read %s: bad PFM header (width and height expected)", path);
+        else if (!size_in_range(w, h))
+            ok = error_set(err, "cannot read %s: image size %dx%d is out of range (1 to %d)",
+                           path, w, h, IMAGE_MAX_SIDE);
+    }
+    /* The scale: its sign gives the byte order; its size is ignored (depths
+     * are stored as they are). One white-space byte then ends the header. */
+    double scale = 0.0;
+    if (ok) {
+        char *after;
+        scale = strtod(p, &after);
+        if (after == p || !isfinite(scale) || scale == 0.0 || after >= end ||
+            !is_pnm_space(*after))
+            ok = error_set(err, "cannot read %s: bad PFM header (scale expected after the size)", path);
+        else
+            p = after + 1;
+    }
+    size_t pixels = (size_t)w * (size_t)h;
+    if (ok && (size_t)(end - p) != pixels * sizeof(float))
+        ok = error_set(err, "cannot read %s: %dx%d floats need %zu bytes of pixels, the file has %zu",
+                       path, w, h, pixels * sizeof(float), (size_t)(end - p));
+    float *out = NULL;
+    if (ok && !(out = malloc(pixels * sizeof(float))))
+        ok = error_set(err, "cannot read %s: out of memory", path);
+    if (ok) {
+        bool little_endian = scale < 0.0;
+        const uint8_t *in = (const uint8_t *)p;
+        for (int y = h - 1; y >= 0; y--) /* bottom row first in the file */
+            for (int x = 0; x < w; x++, in += sizeof(float))
+                out[(size_t)y * (size_t)w + (size_t)x] = get_float(in, little_endian);
+        *values = out;
+        *width = w;
+        *height = h;
+    }
+    free(data);
+    return ok;
+}
+
+/* ---- PGM ---- */
+
+bool write_pgm16(const uint32_t *counts, int width, int height, const char *path, Error *err)
+{
+    if (!size_in_range(width, height))
+        return size_error(err, width, height);
+    size_t row_bytes = (size_t)width * 2;
+    uint8_t *row = malloc(row_bytes);
+    if (!row)
+        return error_set(err, "cannot write %s: out of memory", path);
+    AtomicFile f;
+    if (!atomic_open(&f, path, err)) {
+        free(row);
+        return false;
+    }
+    char header[PFM_HEADER_MAX];
+    int n = snprintf(header, sizeof header, "P5\n%d %d\n%d\n", width, height, PGM16_MAX_VALUE);
+    atomic_write(&f, header, (size_t)n);
+    /* PGM stores the top row first; 16-bit samples are big-endian. */
+    for (int y = 0; y < height; y++) {
+        const uint32_t *src = counts + (size_t)y * (size_t)width;
+        for (int x = 0; x < width; x++) {
+            uint32_t v = src[x] > PGM16_MAX_VALUE ? PGM16_MAX_VALUE : src[x];
+            row[2 * (size_t)x] = (uint8_t)(v >> 8);
+            row[2 * (size_t)x + 1] = (uint8_t)(v & 0xff);
+        }
+        atomic_write(&f, row, row_bytes);
+    }
+    free(row);
+    return atomic_commit(&f, err);
+}
+
+/* ---- depth pictures ---- */
+
+void depth_to_grey(const float *depth, Image *out)
+{
+    size_t pixels = (size_t)out->width * (size_t)out->height;
+    double dmin = INFINITY, dmax = -INFINITY;
+    for (size_t i = 0; i < pixels; i++) {
+        if (isfinite(depth[i])) {
+            dmin = fmin(dmin, depth[i]);
+            dmax = fmax(dmax, depth[i]);
+        }
+    }
+    /* grey = 255 + (48 - 255) * (d - dmin) / (dmax - dmin), rounded to nearest:
+     * linear in d, so equal steps in depth are equal steps in grey. */
+    double range = dmax - dmin;
+    for (size_t i = 0; i < pixels; i++) {
+        uint8_t *p = out->rgb + i * RGB_CHANNELS;
+        if (!isfinite(depth[i])) {
+            p[0] = DEPTH_BACKGROUND.r;
+            p[1] = DEPTH_BACKGROUND.g;
+            p[2] = DEPTH_BACKGROUND.b;
+            continue;
+        }
+        double t = range > 0.0 ? (depth[i] - dmin) / range : 0.0;
+        uint8_t grey = (uint8_t)lround(GREY_NEAR + (GREY_FAR - GREY_NEAR) * t);
+        p[0] = p[1] = p[2] = grey;
+    }
+}
+
+/* ---- comparison ---- */
+
+static const Rgb DIFF_MARK = {255, 0, 255}; /* magenta: rare in the lessons' pictures */
+#define DIFF_DIM 4                           /* matching pixels are shown at 1/4 */
+
+bool image_compare(const Image *a, const Image *b, int channel_tolerance,
+                   ImageDiff *result, Image *diff, Error *err)
+{
+    if (diff) {
+        diff->width = 0;
+        diff->height = 0;
+        diff->rgb = NULL;
+    }
+    if (a->width != b->width || a->height != b->height)
+        return error_set(err, "images differ in size: %dx%d and %dx%d",
+                         a->width, a->height, b->width, b->height);
+    if (diff && !image_init(diff, b->width, b->height, err))
+        return false;
+
+    ImageDiff r = {0, 0, -1, -1, -1, -1};
+    for (int y = 0; y < a->height; y++) {
+        for (int x = 0; x < a->width; x++) {
+            Rgb ca = image_get(a, x, y), cb = image_get(b, x, y);
+            int d = abs(ca.r - cb.r);
+            d = d > abs(ca.g - cb.g) ? d : abs(ca.g - cb.g);
+            d = d > abs(ca.b - cb.b) ? d : abs(ca.b - cb.b);
+            if (d > r.max_channel_diff)
+                r.max_channel_diff = d;
+            bool differs = d > channel_tolerance;
+            if (differs) {
+                if (r.differing == 0) {
+                    r.x0 = r.x1 = x;
+                    r.y0 = r.y1 = y;
+                }
+                r.x0 = x < r.x0 ? x : r.x0;
+                r.x1 = x > r.x1 ? x : r.x1;
+                r.y1 = y; /* rows are visited top to bottom */
+                r.differing++;
+            }
+            if (diff) {
+                Rgb dim = {(uint8_t)(cb.r / DIFF_DIM), (uint8_t)(cb.g / DIFF_DIM),
+                           (uint8_t)(cb.b / DIFF_DIM)};
+                image_set(diff, x, y, differs ? DIFF_MARK : dim);
+            }
+        }
+    }
+    if (result)
+        *result = r;
+    return true;
+}

@@ -1,0 +1,84 @@
+/* image.h: the pictures a lesson writes and a test reads.
+ *
+ *  - Image: 8-bit RGB, row 0 is the top row (as in a PNG: no flip anywhere).
+ *  - PNG write (stb_image_write) and read (stb_image, any PNG converted to RGB).
+ *  - PFM: a float image, grey, little-endian, scale -1.0, rows bottom to top as
+ *    the format says. The lessons write view depth d this way (--depth-out).
+ *  - PGM: 16-bit binary P5, big-endian as the format says (--overdraw-out).
+ *  - depth_to_grey: near bright, far dark, background in its own colour.
+ *  - image_compare: counts, largest channel difference, bounding box, diff picture.
+ *
+ * Every writer is atomic (file.h): the bytes go to a temporary file in the same
+ * directory, which is renamed over the target only once complete. */
+#ifndef IMAGE_H
+#define IMAGE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "error.h"
+
+/* CONVENTIONS.md: images are 1 to 16384 pixels on a side. */
+#define IMAGE_MAX_SIDE 16384
+
+typedef struct { uint8_t r, g, b; } Rgb;
+
+typedef struct {
+    int width, height;
+    uint8_t *rgb; /* width * height * 3 bytes, row-major, top row first */
+} Image;
+
+/* A black image. False (with err set) on a bad size or no memory. */
+bool image_init(Image *im, int width, int height, Error *err);
+void image_free(Image *im);
+void image_fill(Image *im, Rgb c);
+
+static inline void image_set(Image *im, int x, int y, Rgb c)
+{
+    uint8_t *p = im->rgb + ((size_t)y * (size_t)im->width + (size_t)x) * 3;
+    p[0] = c.r; p[1] = c.g; p[2] = c.b;
+}
+
+static inline Rgb image_get(const Image *im, int x, int y)
+{
+    const uint8_t *p = im->rgb + ((size_t)y * (size_t)im->width + (size_t)x) * 3;
+    Rgb c = {p[0], p[1], p[2]};
+    return c;
+}
+
+bool image_write_png(const Image *im, const char *path, Error *err);
+bool image_read_png(Image *im, const char *path, Error *err); /* im is initialised here */
+
+/* values: width * height floats, top row first in memory (flipped on write). */
+bool write_pfm(const float *values, int width, int height, const char *path, Error *err);
+/* Reads a grey PFM written by write_pfm (or any grey PFM, either endianness).
+ * *values (top row first, like write_pfm's) is allocated here: free() it. */
+bool read_pfm(float **values, int *width, int *height, const char *path, Error *err);
+
+/* counts: width * height values, clamped to 65535 on write. */
+bool write_pgm16(const uint32_t *counts, int width, int height, const char *path, Error *err);
+
+/* The background colour of depth pictures: it is no grey, so "nothing was
+ * drawn here" never looks like "something very far away". */
+extern const Rgb DEPTH_BACKGROUND;
+
+/* depth: view depths d, +infinity (or any non-finite value) for background.
+ * The finite range [dmin, dmax] of the buffer maps to grey 255 (near) .. 48 (far). */
+void depth_to_grey(const float *depth, Image *out);
+
+typedef struct {
+    long differing;        /* pixels where any channel differs by more than the tolerance */
+    int max_channel_diff;  /* largest |a - b| over all channels and pixels */
+    int x0, y0, x1, y1;    /* bounding box of the differing pixels, inclusive; -1 when none */
+} ImageDiff;
+
+/* a and b must have the same size (checked: false with err set otherwise).
+ * A pixel differs when one of its channels differs by more than channel_tolerance.
+ * diff (may be NULL) becomes a picture of the comparison: matching pixels are
+ * b dimmed to a quarter, differing pixels magenta. diff is initialised here
+ * (free it with image_free); it is left empty when false is returned. */
+bool image_compare(const Image *a, const Image *b, int channel_tolerance,
+                   ImageDiff *result, Image *diff, Error *err);
+
+#endif

@@ -1,0 +1,390 @@
+/* test_support.c: see test_support.h. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include "test_support.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "file.h"
+
+#define PATH_BUF 4096
+#define PATH_SLOTS 8 /* path_join's rotating buffers: "valid for a few calls" */
+
+/* run_program: the time a lesson may take before it counts as hung. */
+#define RUN_TIMEOUT_SECONDS 60
+#define STATUS_TIMED_OUT 124 /* what timeout(1) reports */
+#define STATUS_SIGNAL_BASE 128
+#define POLL_MAX_NS 10000000L /* the wait polls at most every 10 ms */
+
+/* The environment the Makefile's test target sets, with its defaults. */
+static const char *env_or(const char *name, const char *fallback)
+{
+    const char *v = getenv(name);
+    return v && *v ? v : fallback;
+}
+
+static const char *test_output_dir(void)
+{
+    return env_or("TEST_OUTPUT", "build/test-output");
+}
+
+const char *path_join(const char *dir, const char *file)
+{
+    static char slots[PATH_SLOTS][PATH_BUF];
+    static int next;
+    char *buf = slots[next];
+    next = (next + 1) % PATH_SLOTS;
+    size_t n = strlen(dir);
+    const char *sep = n > 0 && dir[n - 1] == '/' ? "" : "/";
+    int len = snprintf(buf, PATH_BUF, "%s%s%s", dir, sep, file);
+    if (len < 0 || len >= PATH_BUF)
+        fail_msg("path too long: %s/%s", dir, file);
+    return buf;
+}
+
+bool file_exists(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0;
+}
+
+/* ---- expect_image ---- */
+
+/* "02_zbuffer" -> "02": the LESSON= that `make update-expected` wants.
+ * Other groups ("common", "tools") are selected by their whole name. */
+static void lesson_selector(const char *group, char *out, size_t size)
+{
+    if (group[0] >= '0' && group[0] <= '9' && group[1] >= '0' && group[1] <= '9')
+        snprintf(out, size, "%.2s", group);
+    else
+        snprintf(out, size, "%s", group);
+}
+
+static bool update_requested(void)
+{
+    const char *v = getenv("UPDATE_EXPECTED");
+    return v && strcmp(v, "1") == 0;
+}
+
+/* Fails the test at the caller's line, after the lines print_error printed. */
+static void fail_at(const char *file, int line)
+{
+    _fail(file, line);
+}
+
+static void update_expected(const Image *actual, const char *group, const char *path,
+                            const char *file, int line)
+{
+    Error err;
+    if (!make_dirs(path_join("tests/expected", group), &err) ||
+        !image_write_png(actual, path, &err)) {
+        print_error("cannot update the expected image: %s\n", err.msg);
+        fail_at(file, line);
+    }
+    print_message("updated %s\n", path);
+}
+
+/* A diff picture for images of different sizes: the union of both, compared
+ * where they overlap, magenta where only one of them has pixels. */
+static bool diff_of_different_sizes(const Image *actual, const Image *expected,
+                                    Image *diff, Error *err)
+{
+    int w = actual->width > expected->width ? actual->width : expected->width;
+    int h = actual->height > expected->height ? actual->height : expected->height;
+    if (!image_init(diff, w, h, err))
+        return false;
+    const Rgb mark = {255, 0, 255};
+    for (int y = 0; y < h; y++) {
+        for (int x = 0; x < w; x++) {
+            bool in_a = x < actual->width && y < actual->height;
+            bool in_e = x < expected->width && y < expected->height;
+            Rgb c = mark;
+            if (in_a && in_e) {
+                Rgb ca = image_get(actual, x, y), ce = image_get(expected, x, y);
+                if (ca.r == ce.r && ca.g == ce.g && ca.b == ce.b)
+                    c = (Rgb){(uint8_t)(ce.r / 4), (uint8_t)(ce.g / 4), (uint8_t)(ce.b / 4)};
+            }
+            image_set(diff, x, y, c);
+        }
+    }
+    return true;
+}
+
+/* Writes <name>.actual.png and <name>.diff.png; prints where they are. */
+static void write_mismatch_pictures(const Image *actual, const Image *diff,
+                                    const char *group, const char *name,
+                                    const char *expected_path)
+{
+    char actual_name[PATH_BUF], diff_name[PATH_BUF];
+    snprintf(actual_name, sizeof actual_name, "%s.actual.png", name);
+    snprintf(diff_name, sizeof diff_name, "%s.diff.png", name);
+    const char *dir = path_join(test_output_dir(), group);
+    const char *actual_path = path_join(dir, actual_name);
+    const char *diff_path = path_join(dir, diff_name);
+    Error err;
+    if (!make_dirs(dir, &err) || !image_write_png(actual, actual_path, &err) ||
+        !image_write_png(diff, diff_path, &err))
+        print_error("  (could not save the pictures: %s)\n", err.msg);
+    print_error("  expected: %s\n  actual:   %s\n  diff:     %s  (magenta: pixels that differ)\n",
+                expected_path, actual_path, diff_path);
+}
+
+/* A passing test leaves no stale .actual/.diff from an earlier failure. */
+static void remove_old_mismatch_pictures(const char *group, const char *name)
+{
+    char file[PATH_BUF];
+    const char *dir = path_join(test_output_dir(), group);
+    snprintf(file, sizeof file, "%s.actual.png", name);
+    unlink(path_join(dir, file));
+    snprintf(file, sizeof file, "%s.diff.png", name);
+    unlink(path_join(dir, file));
+}
+
+void expect_image_tolerant(const Image *actual, const char *group, const char *name,
+                           long max_differing_pixels, int channel_tolerance,
+                           const char *file, int line)
+{
+    char expected_path[PATH_BUF], lesson[PATH_BUF];
+    snprintf(expected_path, sizeof expected_path, "tests/expected/%s/%s.png", group, name);
+    lesson_selector(group, lesson, sizeof lesson);
+    if (update_requested()) {
+        update_expected(actual, group, expected_path, file, line);
+        return;
+    }
+    if (!file_exists(expected_path)) {
+        print_error("no expected image %s\n"
+                    "  to create it from the current output (then look at it!):\n"
+                    "  make update-expected LESSON=%s\n", expected_path, lesson);
+        fail_at(file, line);
+    }
+    Image expected;
+    Error err;
+    if (!image_read_png(&expected, expected_path, &err)) {
+        print_error("%s\n", err.msg);
+        fail_at(file, line);
+    }
+
+    Image diff = {0, 0, NULL};
+    ImageDiff d;
+    bool same_size = actual->width == expected.width && actual->height == expected.height;
+    if (same_size) {
+        if (!image_compare(actual, &expected, channel_tolerance, &d, &diff, &err)) {
+            image_free(&expected);
+            print_error("%s\n", err.msg);
+            fail_at(file, line);
+        }
+        if (d.differing <= max_differing_pixels) {
+            image_free(&diff);
+            image_free(&expected);
+            remove_old_mismatch_pictures(group, name);
+            return;
+        }
+        print_error("image %s/%s differs from the expected image\n", group, name);
+    } else {
+        print_error("image %s/%s is %dx%d, the expected image is %dx%d\n", group, name,
+                    actual->width, actual->height, expected.width, expected.height);
+        if (!diff_of_different_sizes(actual, &expected, &diff, &err))
+            print_error("  (no diff picture: %s)\n", err.msg);
+    }
+    if (diff.rgb)
+        write_mismatch_pictures(actual, &diff, group, name, expected_path);
+    if (same_size)
+        print_error("  %ld pixels differ (allowed: %ld, tolerance %d per channel), "
+                    "largest channel difference %d, within x %d..%d, y %d..%d\n",
+                    d.differing, max_differing_pixels, channel_tolerance,
+                    d.max_channel_diff, d.x0, d.x1, d.y0, d.y1);
+    print_error("  if the change is intended: make update-expected LESSON=%s\n", lesson);
+    image_free(&diff);
+    image_free(&expected);
+    fail_at(file, line);
+}
+
+/* ---- run_program ---- */
+
+/* The whole of a temporary file, as a NUL-terminated string. */
+static char *slurp(FILE *fp)
+{
+    size_t cap = 4096, len = 0;
+    char *buf = malloc(cap);
+    assert_non_null(buf);
+    rewind(fp);
+    size_t got;
+    while ((got = fread(buf + len, 1, cap - len - 1, fp)) > 0) {
+        len += got;
+        if (cap - len - 1 == 0) {
+            cap *= 2;
+            buf = realloc(buf, cap);
+            assert_non_null(buf);
+        }
+    }
+    buf[len] = '\0';
+    return buf;
+}
+
+/* In the child: stdin from /dev/null, stdout and stderr to the files, then exec.
+ * If exec fails, its errno goes back through report_fd (closed by a
+ * successful exec, as it is close-on-exec). */
+static void exec_child(const char *path, char **argv, FILE *out, FILE *err, int report_fd)
+{
+    int null_fd = open("/dev/null", O_RDONLY);
+    if (null_fd < 0 || dup2(null_fd, STDIN_FILENO) < 0 ||
+        dup2(fileno(out), STDOUT_FILENO) < 0 || dup2(fileno(err), STDERR_FILENO) < 0) {
+        int e = errno;
+        (void)!write(report_fd, &e, sizeof e);
+        _exit(127);
+    }
+    execv(path, argv);
+    int e = errno;
+    (void)!write(report_fd, &e, sizeof e);
+    _exit(127);
+}
+
+/* Waits for the child, killing it after RUN_TIMEOUT_SECONDS. */
+static int wait_with_timeout(pid_t pid)
+{
+    struct timespec start, now;
+    clock_gettime(CLOCK_MONOTONIC, &start);
+    long sleep_ns = 100000; /* starts at 0.1 ms: most runs are short */
+    for (;;) {
+        int st;
+        pid_t r = waitpid(pid, &st, WNOHANG);
+        if (r == pid)
+            return WIFEXITED(st) ? WEXITSTATUS(st) : STATUS_SIGNAL_BASE + WTERMSIG(st);
+        if (r < 0 && errno != EINTR)
+            fail_msg("waitpid failed: %s", strerror(errno));
+        clock_gettime(CLOCK_MONOTONIC, &now);
+        if (now.tv_sec - start.tv_sec >= RUN_TIMEOUT_SECONDS) {
+            kill(pid, SIGKILL);
+            while (waitpid(pid, &st, 0) < 0 && errno == EINTR)
+                continue;
+            return STATUS_TIMED_OUT;
+        }
+        struct timespec pause = {0, sleep_ns};
+        nanosleep(&pause, NULL);
+        sleep_ns = sleep_ns * 2 > POLL_MAX_NS ? POLL_MAX_NS : sleep_ns * 2;
+    }
+}
+
+static RunResult run_in(const char *dir, const char *program, const char *const *args)
+{
+    const char *path = path_join(dir, program);
+    size_t argc = 0;
+    while (args && args[argc])
+        argc++;
+    char **argv = calloc(argc + 2, sizeof *argv);
+    assert_non_null(argv);
+    argv[0] = (char *)path; /* execv's argv is not const, but it does not write */
+    for (size_t i = 0; i < argc; i++)
+        argv[i + 1] = (char *)args[i];
+
+    FILE *out = tmpfile(), *err = tmpfile();
+    int report[2];
+    if (!out || !err || pipe(report) != 0)
+        fail_msg("cannot set up a run of %s: %s", path, strerror(errno));
+    fcntl(report[1], F_SETFD, FD_CLOEXEC);
+    fflush(stdout);
+    fflush(stderr);
+    pid_t pid = fork();
+    if (pid < 0)
+        fail_msg("cannot fork to run %s: %s", path, strerror(errno));
+    if (pid == 0)
+        exec_child(path, argv, out, err, report[1]);
+    close(report[1]);
+    int exec_errno = 0;
+    ssize_t n = read(report[0], &exec_errno, sizeof exec_errno);
+    close(report[0]);
+
+    RunResult r;
+    r.status = wait_with_timeout(pid);
+    r.out = slurp(out);
+    r.err = slurp(err);
+    fclose(out);
+    fclose(err);
+    free(argv);
+    if (n == (ssize_t)sizeof exec_errno) {
+        run_result_free(&r);
+        fail_msg("cannot run %s: %s (was it built? make builds the lessons and tools)",
+                 path, strerror(exec_errno));
+    }
+    return r;
+}
+
+RunResult run_program(const char *program, const char *const *args)
+{
+    return run_in(env_or("BIN_DIR", "build/bin"), program, args);
+}
+
+RunResult run_tool(const char *program, const char *const *args)
+{
+    return run_in(env_or("TOOL_DIR", "build/tools"), program, args);
+}
+
+void run_result_free(RunResult *r)
+{
+    free(r->out);
+    free(r->err);
+    r->out = NULL;
+    r->err = NULL;
+}
+
+/* ---- test_dir ---- */
+
+/* rm -rf, without following symbolic links out of the tree. */
+static void remove_tree(const char *path)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0)
+        return;
+    if (S_ISDIR(st.st_mode)) {
+        DIR *d = opendir(path);
+        if (d) {
+            struct dirent *e;
+            while ((e = readdir(d)) != NULL) {
+                if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+                    continue;
+                char child[PATH_BUF];
+                snprintf(child, sizeof child, "%s/%s", path, e->d_name);
+                remove_tree(child);
+            }
+            closedir(d);
+        }
+        rmdir(path);
+    } else {
+        unlink(path);
+    }
+}
+
+const char *test_dir(const char *name)
+{
+    if (name[0] == '\0' || strstr(name, "..") || name[0] == '/')
+        fail_msg("test_dir wants a plain name, not \"%s\"", name);
+    /* Its own buffers, so that path_join calls do not overwrite it. */
+    static char slots[PATH_SLOTS][PATH_BUF];
+    static int next;
+    char *dir = slots[next];
+    next = (next + 1) % PATH_SLOTS;
+    int len = snprintf(dir, PATH_BUF, "%s/tmp/%s", test_output_dir(), name);
+    if (len < 0 || len >= PATH_BUF)
+        fail_msg("path too long: %s/tmp/%s", test_output_dir(), name);
+    remove_tree(dir);
+    Error err;
+    if (!make_dirs(dir, &err))
+        fail_msg("%s", err.msg);
+    return dir;
+}
