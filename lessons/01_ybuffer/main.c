@@ -1,0 +1,149 @@
+/* 01_ybuffer: the depth test in one dimension (docs/01_ybuffer.md).
+ *
+ * Segments of a flat 2-D world, seen from above, are drawn into one row of
+ * pixels. Each column keeps the nearest y seen so far, in the y-buffer, so the
+ * picture no longer depends on the order the segments are drawn in.
+ *
+ *   build/bin/01_ybuffer                       out/01_ybuffer.png and a summary
+ *   build/bin/01_ybuffer --steps out/steps     the render and y-buffer after each segment
+ *   build/bin/01_ybuffer --order 312           the same segments, another order */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "file.h"
+#include "pictures.h"
+#include "world.h"
+#include "ybuffer.h"
+
+enum { FLAG_SCENE_OUT, FLAG_YBUFFER_OUT, FLAG_ORDER, FLAG_SEGMENTS, FLAG_COUNT };
+
+static const LessonFlag FLAGS[FLAG_COUNT] = {
+    [FLAG_SCENE_OUT] = {"--scene-out", "FILE.png", "also draw the world from above (width x 500)"},
+    [FLAG_YBUFFER_OUT] = {"--ybuffer-out", "FILE.png", "also write the y-buffer as a grey strip"},
+    [FLAG_ORDER] = {"--order", "PERM", "draw the segments in this order, e.g. 312 or 3,1,2"},
+    [FLAG_SEGMENTS] = {"--segments", "FILE", "draw FILE's segments, a line 'x0 y0 x1 y1 r g b' each"},
+};
+
+static const LessonCli CLI = {
+    .program = "01_ybuffer",
+    .purpose = "draw segments of a 2-D world seen from above into one row of pixels, "
+               "keeping the nearest (largest) y per column",
+    .groups = CLI_STEPS,
+    .extra = FLAGS,
+    .n_extra = FLAG_COUNT,
+    .defaults = {.out = "out/01_ybuffer.png", .width = 800, .height = 16},
+};
+
+/* Two outputs with one name would overwrite each other; none may replace the input. */
+static bool check_outputs(const Options *opt, Error *err)
+{
+    const char *name[] = {"--out", "--scene-out", "--ybuffer-out", "--segments"};
+    const char *path[] = {opt->out, opt->extra[FLAG_SCENE_OUT], opt->extra[FLAG_YBUFFER_OUT],
+                          opt->extra[FLAG_SEGMENTS]};
+    for (int i = 0; i < 3; i++)
+        for (int j = i + 1; j < 4; j++) {
+            if (!path[i] || !path[j])
+                continue;
+            if (strcmp(path[i], path[j]) == 0 || same_file(path[i], path[j]))
+                return error_set(err, "%s and %s both name %s", name[i], name[j], path[j]);
+        }
+    return true;
+}
+
+static bool load_segments(const Options *opt, Segment **segs, int *count, Error *err)
+{
+    const char *file = opt->extra[FLAG_SEGMENTS];
+    return file ? read_segments(file, segs, count, err) : default_segments(segs, count, err);
+}
+
+/* Clear, then draw each segment in turn; with --steps, pictures after each. */
+static bool render(YBuffer *yb, const Segment *segs, int count, const int *order,
+                   const Options *opt, Error *err)
+{
+    GreyScale scale = grey_scale_of(segs, count, yb->width);
+    const char *dir = opt->steps_dir;
+    clear_ybuffer(yb);
+    if (dir && !write_step_pictures(yb, segs, scale, opt->height, dir, 0, err))
+        return false;
+    for (int k = 0; k < count; k++) {
+        draw_segment(yb, &segs[order[k]], order[k]);
+        if (dir && !write_step_pictures(yb, segs, scale, opt->height, dir, k + 1, err))
+            return false;
+    }
+    return true;
+}
+
+static bool write_outputs(const YBuffer *yb, const Segment *segs, int count, const Options *opt,
+                          Error *err)
+{
+    Image im;
+    bool ok = render_picture(yb, segs, opt->height, &im, err);
+    if (ok) {
+        ok = write_picture(&im, opt->out, err);
+        image_free(&im);
+    }
+    const char *ybuffer_out = opt->extra[FLAG_YBUFFER_OUT];
+    GreyScale scale = grey_scale_of(segs, count, yb->width);
+    if (ok && ybuffer_out && (ok = ybuffer_picture(yb, scale, opt->height, &im, err))) {
+        ok = write_picture(&im, ybuffer_out, err);
+        image_free(&im);
+    }
+    const char *scene_out = opt->extra[FLAG_SCENE_OUT];
+    if (ok && scene_out && (ok = scene_picture(segs, count, yb, &im, err))) {
+        ok = write_picture(&im, scene_out, err);
+        image_free(&im);
+    }
+    return ok;
+}
+
+static void print_written(const Options *opt, int count)
+{
+    printf("wrote %s", opt->out);
+    if (opt->extra[FLAG_YBUFFER_OUT])
+        printf(", %s", opt->extra[FLAG_YBUFFER_OUT]);
+    if (opt->extra[FLAG_SCENE_OUT])
+        printf(", %s", opt->extra[FLAG_SCENE_OUT]);
+    printf("\n");
+    if (opt->steps_dir)
+        printf("wrote steps 0 to %d into %s (stepK_render.png, stepK_ybuffer.png)\n", count,
+               opt->steps_dir);
+}
+
+int main(int argc, char **argv)
+{
+    Options opt;
+    int status = cli_parse(&CLI, argc, argv, &opt);
+    if (status != CLI_CONTINUE)
+        return status;
+
+    Error err;
+    Segment *segs = NULL;
+    int count = 0, *order = NULL;
+    YBuffer yb = {0};
+    if (!check_outputs(&opt, &err)) {
+        status = EXIT_USAGE;
+    } else if (!load_segments(&opt, &segs, &count, &err)) {
+        status = EXIT_RUN_FAILED;
+    } else if (!(order = malloc(((size_t)count + 1) * sizeof *order))) {
+        error_set(&err, "out of memory for %d segments", count);
+        status = EXIT_RUN_FAILED;
+    } else if (!parse_order(opt.extra[FLAG_ORDER], count, order, &err)) {
+        status = EXIT_USAGE;
+    } else if (!ybuffer_init(&yb, opt.width, &err) ||
+               !render(&yb, segs, count, order, &opt, &err) ||
+               !write_outputs(&yb, segs, count, &opt, &err)) {
+        status = EXIT_RUN_FAILED;
+    } else {
+        print_summary(stdout, &yb, segs, count, order);
+        print_written(&opt, count);
+        status = EXIT_OK;
+    }
+    if (status != EXIT_OK)
+        error_report(CLI.program, &err, status);
+    ybuffer_free(&yb);
+    free(order);
+    free(segs);
+    return status;
+}

@@ -1,0 +1,93 @@
+/* ybuffer.c: lesson 01, the y-buffer. Read top to bottom: clear, interpolate,
+ * test, walk. See ybuffer.h for the conventions and docs/01_ybuffer.md. */
+#include "ybuffer.h"
+
+#include <stdlib.h>
+
+bool ybuffer_init(YBuffer *yb, int width, Error *err)
+{
+    yb->width = width;
+    yb->y = malloc((size_t)width * sizeof *yb->y);
+    yb->owner = malloc((size_t)width * sizeof *yb->owner);
+    if (!yb->y || !yb->owner) {
+        ybuffer_free(yb);
+        return error_set(err, "out of memory for a y-buffer of %d columns", width);
+    }
+    clear_ybuffer(yb);
+    return true;
+}
+
+void ybuffer_free(YBuffer *yb)
+{
+    free(yb->y);
+    free(yb->owner);
+    yb->y = NULL;
+    yb->owner = NULL;
+}
+
+void clear_ybuffer(YBuffer *yb)
+{
+    for (int x = 0; x < yb->width; x++) {
+        yb->y[x] = YBUFFER_CLEARED; /* any segment is nearer than this */
+        yb->owner[x] = NO_SEGMENT;
+    }
+    yb->stats = (FragmentStats){0, 0, 0};
+}
+
+/* a / b rounded towards minus infinity (C's "/" rounds towards zero), b > 0. */
+static int64_t floor_div(int64_t a, int64_t b)
+{
+    int64_t q = a / b;
+    if (a % b != 0 && a < 0)
+        q--;
+    return q;
+}
+
+int64_t round_half_up(int64_t p, int64_t q)
+{
+    /* floor(p/q + 1/2) = floor((2p + q) / 2q), all in integers. In floating
+     * point an exact half can come out a hair low and round down: for the
+     * segment (0,7)-(12,13) at x = 1, 7 (1 - t) + 13 t with t = 1/12 gives
+     * 7.499999999999999, not 7.5. */
+    return floor_div(2 * p + q, 2 * q);
+}
+
+int segment_y_at(const Segment *s, int x)
+{
+    if (s->x0 == s->x1) /* seen from above, a vertical segment shows its nearest point */
+        return s->y0 > s->y1 ? s->y0 : s->y1;
+    /* Take the left end as (x0, y0), so that the denominator x1 - x0 is positive. */
+    int xl = s->x0, yl = s->y0, xr = s->x1, yr = s->y1;
+    if (xl > xr) {
+        xl = s->x1; yl = s->y1;
+        xr = s->x0; yr = s->y0;
+    }
+    /* y = y0 + (y1 - y0) * (x - x0) / (x1 - x0); y0 is an integer, so only the
+     * fraction needs rounding. */
+    int64_t num = (int64_t)(yr - yl) * (int64_t)(x - xl);
+    int64_t den = (int64_t)xr - xl;
+    return yl + (int)round_half_up(num, den);
+}
+
+void draw_segment(YBuffer *yb, const Segment *s, int index)
+{
+    int left = s->x0 < s->x1 ? s->x0 : s->x1;
+    int right = s->x0 < s->x1 ? s->x1 : s->x0;
+    /* Clip the range first, then walk: a segment a million columns long still
+     * costs at most one step per column of the screen. */
+    if (left < 0)
+        left = 0;
+    if (right > yb->width - 1)
+        right = yb->width - 1;
+    for (int x = left; x <= right; x++) {
+        int y = segment_y_at(s, x);     /* where the segment is in this column */
+        yb->stats.tested++;
+        if (depth_test(y, yb->y[x])) {  /* nearer than all seen here so far? */
+            yb->y[x] = y;               /* keep its y, */
+            yb->owner[x] = index;       /* and the column takes its colour */
+            yb->stats.passed++;
+        } else {
+            yb->stats.failed++;
+        }
+    }
+}
