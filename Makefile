@@ -34,7 +34,7 @@ TOOLS      := $(patsubst tools/%.c,$(BUILD)/tools/%,$(wildcard tools/*.c))
 
 # Tests: tests/<group>/test_*.c, where <group> is "common", "tools", or a lesson
 # directory name. LESSON=03 keeps the groups whose name starts with 03.
-TEST_SRC   := $(sort $(wildcard tests/*/test_*.c))
+TEST_SRC   := $(sort $(filter-out tests/support/%,$(wildcard tests/*/test_*.c)))
 ifdef LESSON
 TEST_SRC   := $(filter tests/$(LESSON)%,$(TEST_SRC))
 endif
@@ -109,4 +109,96 @@ diff:
 clean:
 	rm -rf $(BUILD) out
 
+# ---- Robustness: sanitizers, fuzzing, valgrind (docs/robustness.md) ---------
+#
+#   make sanitize          everything rebuilt in build/sanitize with AddressSanitizer
+#                          and UndefinedBehaviorSanitizer, then make test and make run
+#   make fuzz SECONDS=60   each libFuzzer target of tests/fuzz/ for SECONDS seconds,
+#                          one after the other (needs clang); FUZZ=obj picks targets
+#   make valgrind          make run under valgrind memcheck: no error, no leak
+#
+# A sanitizer or valgrind report ends the program with status 86, which no
+# lesson uses: a test that expects status 1 cannot mistake one for a failure.
+
+SANITIZE_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+SANITIZE_ENV   := ASAN_OPTIONS=exitcode=86:detect_leaks=1 \
+                  UBSAN_OPTIONS=exitcode=86:print_stacktrace=1
+
+.PHONY: sanitize fuzz fuzz-build valgrind
+
+sanitize:
+	@$(SANITIZE_ENV) $(MAKE) --no-print-directory BUILD=build/sanitize \
+	    OPT="-O1 -g $(SANITIZE_FLAGS)" test run
+
+# A target is tests/fuzz/fuzz_<name>.c. When <name> is a lesson's directory it
+# links that lesson's objects but main.c: one binary per lesson, as lessons
+# share function names. scripts/fuzz.sh says where corpora and crashes go.
+FUZZ_BUILD := build/fuzz
+FUZZ_CC    := clang
+FUZZ_FLAGS := -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all
+SECONDS    ?= 60
+FUZZ_NAMES := $(patsubst tests/fuzz/fuzz_%.c,%,$(sort $(wildcard tests/fuzz/fuzz_*.c)))
+FUZZ_RUN   := $(if $(FUZZ),$(foreach n,$(FUZZ_NAMES),$(if $(findstring $(FUZZ),$(n)),$(n))),$(FUZZ_NAMES))
+
+fuzz:
+	@sh scripts/check-fuzz-compiler.sh $(FUZZ_CC)
+	@$(MAKE) --no-print-directory BUILD=$(FUZZ_BUILD) CC=$(FUZZ_CC) OPT="$(FUZZ_FLAGS)" fuzz-build
+	@$(SANITIZE_ENV) sh scripts/fuzz.sh $(FUZZ_BUILD) $(SECONDS) $(FUZZ_RUN)
+
+fuzz-build: $(FUZZ_NAMES:%=$(BUILD)/fuzz/fuzz_%)
+
+$(BUILD)/obj/tests/fuzz/fuzz_%.o: CPPFLAGS += -Ilessons/$*
+$(BUILD)/fuzz/fuzz_%: $(BUILD)/obj/tests/fuzz/fuzz_%.o $(COMMON_OBJ) $$(call lesson_objs,$$*)
+	@mkdir -p $(@D)
+	$(CC) $(CFLAGS) -fsanitize=fuzzer $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS)
+
+VALGRIND := valgrind --quiet --error-exitcode=86 --leak-check=full --show-leak-kinds=all \
+            --errors-for-leak-kinds=all
+
+valgrind: $(BINS)
+	@command -v valgrind >/dev/null || { echo "make valgrind needs valgrind: apt-get install valgrind" >&2; exit 1; }
+	@mkdir -p out
+	@set -e; for l in $(LESSONS); do \
+	    echo "== $$l under valgrind"; $(VALGRIND) $(BUILD)/bin/$$l; done
+	@echo "valgrind: no error and no leak in $(words $(LESSONS)) lessons"
+
+# ---- make bench: how fast the rasterizers are (docs/performance.md) ---------
+# One binary per lesson, as lessons share function names: tests/bench/bench.c
+# with BENCH_RASTERIZER naming the lesson's Rasterizer, plus bench_limit.
+# Built in their own object directory with the release flags -O2 whatever
+# OPT says; not built by `make` or `make test`. tests/bench/run-bench.sh runs
+# the limit, then each lesson, prints one table and writes results.csv.
+BENCH_DIR     := $(BUILD)/bench
+BENCH_CFLAGS  := -O2 $(WARN) -ffp-contract=off
+# lesson=Rasterizer, for each lesson the benchmark times (if it exists).
+BENCH_TABLE   := 02_zbuffer=ZBUFFER 03_perspective_z=PERSPECTIVE_ZBUFFER \
+                 04_scanline_inverse_z=SCANLINE_ZBUFFER
+BENCH_TABLE   := $(filter $(LESSONS:%=%=%),$(BENCH_TABLE))
+BENCH_LESSONS := $(foreach e,$(BENCH_TABLE),$(firstword $(subst =, ,$(e))))
+bench_rasterizer = $(lastword $(subst =, ,$(filter $(1)=%,$(BENCH_TABLE))))
+bench_lesson_objs = $(patsubst %.c,$(BENCH_DIR)/obj/%.o,$(filter-out %/main.c,$(wildcard lessons/$(1)/*.c)))
+BENCH_SUPPORT := $(patsubst %.c,$(BENCH_DIR)/obj/%.o,$(wildcard common/*.c) \
+                   tests/bench/workloads.c tests/bench/measure.c)
+BENCH_BINS    := $(BENCH_DIR)/bench_limit $(BENCH_LESSONS:%=$(BENCH_DIR)/bench_%)
+
+.PHONY: bench
+bench: $(BENCH_BINS)
+	@CC="$(CC)" BENCH_CFLAGS="$(BENCH_CFLAGS)" sh tests/bench/run-bench.sh $(BENCH_DIR) $(BENCH_BINS)
+
+$(BENCH_DIR)/obj/%.o: %.c | $(DEPS_OK)
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) -Itests/bench $(BENCH_CFLAGS) $(STB_CFLAGS) -MMD -MP -c $< -o $@
+
+$(BENCH_DIR)/obj/bench_%.o: tests/bench/bench.c | $(DEPS_OK)
+	@mkdir -p $(@D)
+	$(CC) $(CPPFLAGS) -Itests/bench $(BENCH_CFLAGS) -DBENCH_RASTERIZER=$(call bench_rasterizer,$*) \
+	    -MMD -MP -c $< -o $@
+
+$(BENCH_DIR)/bench_limit: $(BENCH_DIR)/obj/tests/bench/limit.o $(BENCH_SUPPORT)
+	$(CC) $(BENCH_CFLAGS) $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS)
+
+$(BENCH_DIR)/bench_%: $(BENCH_DIR)/obj/bench_%.o $$(call bench_lesson_objs,$$*) $(BENCH_SUPPORT)
+	$(CC) $(BENCH_CFLAGS) $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS)
+
+-include $(shell find $(BENCH_DIR)/obj -name '*.d' 2>/dev/null)
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)

@@ -1,0 +1,105 @@
+/* guard_band.c: see guard_band.h. */
+#include "guard_band.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* A small polygon is clipped in buffers on the stack; a bigger one (lesson 04
+ * draws whole faces, up to MESH_MAX_FACE_VERTICES corners) gets them from malloc. */
+#define SMALL_POLYGON 16
+
+/* One side of the band: the points p with sign * p.axis <= limit are inside. */
+typedef struct {
+    bool along_y; /* false: a vertical line x = limit; true: a horizontal line y = limit */
+    double sign;  /* +1: keep what lies below limit, -1: keep what lies above it */
+    double limit;
+} BandSide;
+
+static double coordinate(ScreenVertex v, bool along_y)
+{
+    return along_y ? v.y : v.x;
+}
+
+static bool inside(ScreenVertex v, BandSide s)
+{
+    return s.sign * coordinate(v, s.along_y) <= s.sign * s.limit;
+}
+
+bool guard_band_contains(const ScreenVertex *v, int n, int width, int height)
+{
+    for (int i = 0; i < n; i++)
+        if (!(v[i].x >= -GUARD_BAND && v[i].x <= width + (double)GUARD_BAND &&
+              v[i].y >= -GUARD_BAND && v[i].y <= height + (double)GUARD_BAND))
+            return false;
+    return true;
+}
+
+/* The point where segment a-b crosses the side. The fraction t is computed
+ * from halved coordinates so that a - b cannot overflow even for coordinates
+ * near the largest double; the crossing coordinate is set to the limit exactly. */
+static ScreenVertex crossing(ScreenVertex a, ScreenVertex b, BandSide s, DepthLinearity linear)
+{
+    double ca = coordinate(a, s.along_y) / 2, cb = coordinate(b, s.along_y) / 2;
+    double t = (s.limit / 2 - ca) / (cb - ca);
+    ScreenVertex p;
+    if (s.along_y) {
+        p.x = a.x * (1 - t) + b.x * t;
+        p.y = s.limit;
+    } else {
+        p.x = s.limit;
+        p.y = a.y * (1 - t) + b.y * t;
+    }
+    if (linear == LINEAR_D)
+        p.d = a.d * (1 - t) + b.d * t;                     /* d linear on the screen */
+    else
+        p.d = 1 / ((1 / a.d) * (1 - t) + (1 / b.d) * t); /* 1/d linear on the screen */
+    return p;
+}
+
+/* Sutherland-Hodgman, one side: keep the inside part of polygon in[0..n-1]. */
+static int clip_side(const ScreenVertex *in, int n, BandSide s, DepthLinearity linear,
+                     ScreenVertex *out)
+{
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+        ScreenVertex a = in[i], b = in[(i + 1) % n];
+        bool a_in = inside(a, s), b_in = inside(b, s);
+        if (a_in)
+            out[m++] = a;
+        if (a_in != b_in)
+            out[m++] = crossing(a, b, s, linear);
+    }
+    return m;
+}
+
+int guard_band_clip(const ScreenVertex *in, int n, int width, int height,
+                    DepthLinearity linear, ScreenVertex *out)
+{
+    if (n < 3)
+        return 0;
+    if (guard_band_contains(in, n, width, height)) {
+        memcpy(out, in, (size_t)n * sizeof *in);
+        return n;
+    }
+    const BandSide sides[4] = {
+        {false, -1, -GUARD_BAND},                  /* left:   x >= -GUARD_BAND */
+        {false, +1, width + (double)GUARD_BAND},   /* right:  x <= W + GUARD_BAND */
+        {true, -1, -GUARD_BAND},                   /* top:    y >= -GUARD_BAND */
+        {true, +1, height + (double)GUARD_BAND},   /* bottom: y <= H + GUARD_BAND */
+    };
+    ScreenVertex small[GUARD_BAND_MAX_OUT(SMALL_POLYGON)];
+    ScreenVertex *scratch = small;
+    if (GUARD_BAND_MAX_OUT(n) > GUARD_BAND_MAX_OUT(SMALL_POLYGON)) {
+        scratch = malloc((size_t)GUARD_BAND_MAX_OUT(n) * sizeof *scratch);
+        if (!scratch)
+            return 0; /* out of memory: the polygon is not drawn rather than drawn wrong */
+    }
+    /* Ping-pong between scratch and out so that the last side writes into out. */
+    int m = clip_side(in, n, sides[0], linear, scratch);
+    m = clip_side(scratch, m, sides[1], linear, out);
+    m = clip_side(out, m, sides[2], linear, scratch);
+    m = clip_side(scratch, m, sides[3], linear, out);
+    if (scratch != small)
+        free(scratch);
+    return m >= 3 ? m : 0;
+}

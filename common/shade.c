@@ -1,0 +1,118 @@
+/* shade.c: see shade.h. */
+#include "shade.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "target.h"
+
+const Rgb FLAT_BACKGROUND = {24, 28, 40};
+const Rgb ID_BACKGROUND = {0, 0, 0};
+
+/* Faces without a material take these in turn: distinct hues of similar
+ * brightness, so that neighbouring faces of a built-in scene are told apart. */
+static const Rgb PALETTE[] = {
+    {230, 85, 70},   /* red */
+    {90, 180, 90},   /* green */
+    {70, 120, 220},  /* blue */
+    {235, 190, 60},  /* yellow */
+    {170, 100, 200}, /* purple */
+    {60, 190, 190},  /* teal */
+    {240, 140, 60},  /* orange */
+    {200, 200, 200}, /* light grey */
+};
+#define PALETTE_SIZE ((int)(sizeof PALETTE / sizeof PALETTE[0]))
+
+/* Towards the light, in view space: above (+y), left (-x), behind the viewer (+z). */
+static Vec3 light_direction(void)
+{
+    return vec3_normalize(vec3(-0.4, 0.6, 1.0));
+}
+
+static uint8_t channel(double c)
+{
+    double v = round(c * 255);
+    return (uint8_t)(v < 0 ? 0 : v > 255 ? 255 : v);
+}
+
+Rgb face_base_colour(const Mesh *m, int face)
+{
+    int mat = m->faces[face].material;
+    if (mat >= 0 && mat < m->nmaterials && m->materials[mat].has_kd) {
+        Vec3 kd = m->materials[mat].kd;
+        Rgb c = {channel(kd.x), channel(kd.y), channel(kd.z)};
+        return c;
+    }
+    return PALETTE[face % PALETTE_SIZE];
+}
+
+/* The face's unit normal in view space; zero for a degenerate face. */
+static Vec3 view_normal(const Mesh *m, const Camera *camera, int face)
+{
+    enum { STACK_CORNERS = 64 };
+    const Face *f = &m->faces[face];
+    Vec3 stack[STACK_CORNERS] = {{0, 0, 0}};
+    Vec3 *pts = f->count <= STACK_CORNERS ? stack : malloc((size_t)f->count * sizeof *pts);
+    if (!pts)
+        return vec3(0, 0, 0); /* out of memory: the face gets ambient light only */
+    for (int k = 0; k < f->count; k++)
+        pts[k] = camera_to_view(camera, m->verts[m->corners[f->first + k]]);
+    Vec3 n = vec3_normalize(polygon_normal(pts, f->count));
+    if (pts != stack)
+        free(pts);
+    return n;
+}
+
+Rgb face_flat_colour(const Mesh *m, const Camera *camera, int face)
+{
+    Rgb base = face_base_colour(m, face);
+    double lambert = fabs(vec3_dot(view_normal(m, camera, face), light_direction()));
+    double k = SHADE_AMBIENT + SHADE_DIFFUSE * lambert; /* both windings are lit alike */
+    Rgb c = {channel(base.r / 255.0 * k), channel(base.g / 255.0 * k),
+             channel(base.b / 255.0 * k)};
+    return c;
+}
+
+Rgb face_id_colour(int face)
+{
+    uint32_t id = (uint32_t)face + 1; /* 0 stays for the background */
+    Rgb c = {(uint8_t)(id >> 16), (uint8_t)(id >> 8), (uint8_t)id};
+    return c;
+}
+
+int32_t id_colour_face(Rgb c)
+{
+    return (int32_t)(((uint32_t)c.r << 16) | ((uint32_t)c.g << 8) | c.b) - 1;
+}
+
+bool shade_image(const Mesh *m, const Camera *camera, const int32_t *face,
+                 const float *view_depth, int width, int height, ShadeMode mode,
+                 Image *out, Error *err)
+{
+    if (!image_init(out, width, height, err))
+        return false;
+    if (mode == SHADE_DEPTH) {
+        depth_to_grey(view_depth, out);
+        return true;
+    }
+    /* Flat colours once per face, not once per pixel. */
+    Rgb *flat = NULL;
+    if (mode == SHADE_FLAT) {
+        flat = malloc((m->nfaces > 0 ? (size_t)m->nfaces : 1) * sizeof *flat);
+        if (!flat) {
+            image_free(out);
+            return error_set(err, "out of memory shading %d faces", m->nfaces);
+        }
+        for (int i = 0; i < m->nfaces; i++)
+            flat[i] = face_flat_colour(m, camera, i);
+    }
+    Rgb background = mode == SHADE_FLAT ? FLAT_BACKGROUND : ID_BACKGROUND;
+    for (int y = 0; y < height; y++)
+        for (int x = 0; x < width; x++) {
+            int32_t f = face[(size_t)y * (size_t)width + (size_t)x];
+            Rgb c = f == NO_FACE ? background : flat ? flat[f] : face_id_colour(f);
+            image_set(out, x, y, c);
+        }
+    free(flat);
+    return true;
+}

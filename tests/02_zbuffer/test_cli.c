@@ -1,0 +1,313 @@
+/* test_cli.c: build/bin/02_zbuffer end to end: its pictures, its outputs, its
+ * summary and its errors. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "file.h"
+#include "image.h"
+#include "scene.h"
+#include "shade.h"
+#include "test_support.h"
+
+#define PROGRAM "02_zbuffer"
+#define GROUP "02_zbuffer"
+
+/* Runs the lesson, expecting success, and reads back the picture it wrote. */
+static void render_to_image(const char *const *args, const char *out, Image *im)
+{
+    RunResult r = run_program(PROGRAM, args);
+    if (r.status != 0)
+        fail_msg("02_zbuffer exited with %d: %s", r.status, r.err);
+    run_result_free(&r);
+    Error err;
+    if (!image_read_png(im, out, &err))
+        fail_msg("reading %s: %s", out, err.msg);
+}
+
+/* ---- Expected images ---------------------------------------------------------- */
+
+static void default_render_matches_expected(void **state)
+{
+    (void)state;
+    const char *out = path_join(test_dir("02_default"), "default.png");
+    const char *args[] = {"--out", out, NULL};
+    Image im;
+    render_to_image(args, out, &im);
+    assert_int_equal(im.width, 800); /* the defaults: 800 x 600, triangles3, flat */
+    assert_int_equal(im.height, 600);
+    expect_image(&im, GROUP, "default");
+    image_free(&im);
+}
+
+/* Every built-in scene, flat and --shade id, at 160 x 120. */
+static void every_scene_matches_expected(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("02_scenes");
+    const char *shades[2] = {"flat", "id"};
+    for (int i = 0; i < scene_count(); i++)
+        for (int s = 0; s < 2; s++) {
+            char name[96], file[128];
+            snprintf(name, sizeof name, "%s_%s", scene_at(i)->name, shades[s]);
+            snprintf(file, sizeof file, "%s.png", name);
+            const char *out = path_join(dir, file);
+            const char *args[] = {"--scene", scene_at(i)->name, "--shade", shades[s],
+                                  "--width", "160", "--height", "120", "--out", out, NULL};
+            Image im;
+            render_to_image(args, out, &im);
+            expect_image(&im, GROUP, name);
+            image_free(&im);
+        }
+}
+
+/* The pictures the page shows side by side: the painter on triangles3, and
+ * the separate-buffers bug on interpenetrate. */
+static void wrong_pictures_match_expected(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("02_wrong");
+    const char *painter = path_join(dir, "painter.png");
+    const char *a1[] = {"--painter", "--width", "160", "--height", "120", "--out", painter, NULL};
+    Image im;
+    render_to_image(a1, painter, &im);
+    expect_image(&im, GROUP, "triangles3_painter");
+    image_free(&im);
+
+    const char *sep = path_join(dir, "separate.png");
+    const char *a2[] = {"--scene", "interpenetrate", "--bug", "separate-buffers", "--width",
+                        "160", "--height", "120", "--out", sep, NULL};
+    render_to_image(a2, sep, &im);
+    expect_image(&im, GROUP, "interpenetrate_separate_buffers");
+    image_free(&im);
+}
+
+/* --bug clear-zero: nothing passes, so the picture is the background alone. */
+static void clear_zero_picture_is_background_only(void **state)
+{
+    (void)state;
+    const char *out = path_join(test_dir("02_clear_zero"), "zero.png");
+    const char *args[] = {"--bug", "clear-zero", "--width", "40", "--height", "30",
+                          "--out", out, NULL};
+    Image im;
+    render_to_image(args, out, &im);
+    for (int y = 0; y < im.height; y++)
+        for (int x = 0; x < im.width; x++) {
+            Rgb c = image_get(&im, x, y);
+            if (c.r != FLAT_BACKGROUND.r || c.g != FLAT_BACKGROUND.g || c.b != FLAT_BACKGROUND.b)
+                fail_msg("pixel (%d,%d) is (%d,%d,%d), not the background", x, y, c.r, c.g, c.b);
+        }
+    image_free(&im);
+}
+
+/* ---- Outputs and summary -------------------------------------------------------- */
+
+/* A 16-bit binary PGM as write_pgm16 writes it: "P5\n<w> <h>\n65535\n", big-endian. */
+static uint32_t *read_pgm16(const char *path, int *w, int *h)
+{
+    char *data;
+    size_t len;
+    Error err;
+    if (!read_file(path, 1 << 26, &data, &len, &err))
+        fail_msg("%s", err.msg);
+    int maxval, used;
+    if (sscanf(data, "P5 %d %d %d%n", w, h, &maxval, &used) != 3 || maxval != 65535)
+        fail_msg("%s is not a 16-bit PGM", path);
+    size_t n = (size_t)*w * (size_t)*h;
+    const unsigned char *p = (const unsigned char *)data + used + 1; /* one blank after maxval */
+    assert_true((size_t)used + 1 + 2 * n == len);
+    uint32_t *v = malloc(n * sizeof *v);
+    for (size_t i = 0; i < n; i++)
+        v[i] = (uint32_t)p[2 * i] << 8 | p[2 * i + 1];
+    free(data);
+    return v;
+}
+
+/* The summary's numbers agree with the files: fragments tested = the sum of
+ * the overdraw picture, covered pixels = its nonzero pixels, tested = passed
+ * + failed; the depth file holds +infinity where nothing was drawn and the
+ * hand-computed depth 9.489 at pixel (70, 90) (test_zbuffer.c derives it). */
+static void summary_agrees_with_the_written_files(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("02_outputs");
+    const char *png = path_join(dir, "pic.png"), *pfm = path_join(dir, "sub/depth.pfm"),
+               *pgm = path_join(dir, "sub/over.pgm");
+    const char *args[] = {"--width", "200", "--height", "150", "--out", png, "--depth-out",
+                          pfm, "--overdraw-out", pgm, NULL};
+    RunResult r = run_program(PROGRAM, args);
+    assert_int_equal(r.status, 0);
+
+    const char *first = "02_zbuffer: scene triangles3 (3 faces): 3 triangles drawn, "
+                        "0 dropped at the near plane\n";
+    if (strncmp(r.out, first, strlen(first)) != 0)
+        fail_msg("summary starts with:\n%s\nexpected:\n%s", r.out, first);
+    unsigned long long tested, passed, failed;
+    double average;
+    long covered;
+    const char *line2 = r.out + strlen(first);
+    if (sscanf(line2, "  fragments: %llu tested, %llu passed, %llu failed; average overdraw "
+                      "%lf over %ld covered pixels", &tested, &passed, &failed, &average,
+               &covered) != 5)
+        fail_msg("second line of the summary not understood:\n%s", line2);
+    assert_int_equal(tested, passed + failed);
+    for (int k = 0; k < 3; k++) {
+        const char *path = k == 0 ? png : k == 1 ? pfm : pgm;
+        char wrote[4200];
+        snprintf(wrote, sizeof wrote, "  wrote %s\n", path);
+        if (!strstr(r.out, wrote))
+            fail_msg("the summary does not say it wrote %s:\n%s", path, r.out);
+    }
+    run_result_free(&r);
+
+    int w, h;
+    uint32_t *over = read_pgm16(pgm, &w, &h);
+    assert_int_equal(w, 200);
+    assert_int_equal(h, 150);
+    unsigned long long sum = 0;
+    long nonzero = 0;
+    for (int i = 0; i < w * h; i++) {
+        sum += over[i];
+        nonzero += over[i] > 0;
+    }
+    assert_int_equal(sum, tested);
+    assert_int_equal(nonzero, covered);
+    assert_true(fabs(average - (double)tested / covered) < 0.006);
+    free(over);
+
+    float *depth;
+    Error err;
+    if (!read_pfm(&depth, &w, &h, pfm, &err))
+        fail_msg("%s", err.msg);
+    assert_true(isinf(depth[0]) && depth[0] > 0); /* corner (0, 0): background */
+    assert_true(fabs(depth[90 * 200 + 70] - 9.489) < 1e-3);
+    free(depth);
+}
+
+/* An OBJ of one square facing +Z, coloured by its .mtl: --obj frames it, so
+ * the centre pixel shows it; --shade id gives it id 1; flat keeps Kd's hue. */
+static void obj_file_is_framed_and_coloured(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("02_obj");
+    const char *obj = path_join(dir, "square.obj"), *mtl = path_join(dir, "square.mtl");
+    FILE *f = fopen(obj, "w");
+    assert_non_null(f);
+    fputs("mtllib square.mtl\nv 10 10 5\nv 12 10 5\nv 12 12 5\nv 10 12 5\n"
+          "usemtl red\nf 1 2 3 4\n", f);
+    fclose(f);
+    f = fopen(mtl, "w");
+    assert_non_null(f);
+    fputs("newmtl red\nKd 1 0 0\n", f);
+    fclose(f);
+
+    const char *id_png = path_join(dir, "id.png"), *flat_png = path_join(dir, "flat.png");
+    const char *a1[] = {"--obj", obj, "--shade", "id", "--width", "64", "--height", "48",
+                        "--out", id_png, NULL};
+    Image im;
+    render_to_image(a1, id_png, &im);
+    Rgb c = image_get(&im, 32, 24);
+    assert_int_equal(id_colour_face(c), 0);
+    c = image_get(&im, 0, 0);
+    assert_int_equal(id_colour_face(c), -1); /* black: nothing there */
+    image_free(&im);
+
+    const char *a2[] = {"--obj", obj, "--width", "64", "--height", "48", "--out", flat_png,
+                        NULL};
+    render_to_image(a2, flat_png, &im);
+    c = image_get(&im, 32, 24);
+    assert_true(c.r > 64 && c.g == 0 && c.b == 0);
+    image_free(&im);
+}
+
+/* ---- Errors ------------------------------------------------------------------ */
+
+static void expect_error(const char *const *args, int status, const char *message)
+{
+    RunResult r = run_program(PROGRAM, args);
+    if (r.status != status || strcmp(r.err, message) != 0)
+        fail_msg("exit %d, stderr:\n%s\nexpected exit %d, stderr:\n%s", r.status, r.err,
+                 status, message);
+    run_result_free(&r);
+}
+
+static void bad_lesson_flags_are_usage_errors(void **state)
+{
+    (void)state;
+    const char *a1[] = {"--bug", "off-by-one", NULL};
+    expect_error(a1, 2,
+                 "02_zbuffer: error: --bug: 'off-by-one' is not one of separate-buffers, "
+                 "clear-zero\n");
+    const char *a2[] = {"--painter", "--bug", "clear-zero", NULL};
+    expect_error(a2, 2, "02_zbuffer: error: --painter and --bug cannot be used together\n");
+    const char *a3[] = {"--bug", NULL};
+    expect_error(a3, 2, "02_zbuffer: error: --bug needs a value\n");
+    const char *a4[] = {"--ascii", NULL}; /* a flag of the series this lesson does not take */
+    expect_error(a4, 2, "02_zbuffer: error: --ascii does not apply to 02_zbuffer (it prints no "
+                        "text picture)\n");
+}
+
+static void missing_obj_fails_without_output(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("02_missing");
+    const char *out = path_join(dir, "never.png");
+    const char *args[] = {"--obj", path_join(dir, "nothing.obj"), "--out", out, NULL};
+    char message[1200];
+    snprintf(message, sizeof message,
+             "02_zbuffer: error: cannot read %s: No such file or directory\n", args[1]);
+    expect_error(args, 1, message);
+    assert_false(file_exists(out));
+}
+
+static void unwritable_output_fails_cleanly(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("02_unwritable");
+    const char *blocker = path_join(dir, "file");
+    FILE *f = fopen(blocker, "w");
+    assert_non_null(f);
+    fclose(f);
+    /* "file" is a file, so "file/pic.png" cannot be created. */
+    const char *args[] = {"--out", path_join(blocker, "pic.png"), "--width", "8", "--height",
+                          "8", NULL};
+    char message[1200];
+    snprintf(message, sizeof message,
+             "02_zbuffer: error: cannot create directory %s: a file of that name exists\n",
+             blocker);
+    expect_error(args, 1, message);
+}
+
+static void bad_camera_is_a_usage_error(void **state)
+{
+    (void)state;
+    const char *args[] = {"--near", "5", "--far", "1", NULL};
+    expect_error(args, 2,
+                 "02_zbuffer: error: --far: 1 is out of range (far must be greater than "
+                 "near, 5)\n");
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(default_render_matches_expected),
+        cmocka_unit_test(every_scene_matches_expected),
+        cmocka_unit_test(wrong_pictures_match_expected),
+        cmocka_unit_test(clear_zero_picture_is_background_only),
+        cmocka_unit_test(summary_agrees_with_the_written_files),
+        cmocka_unit_test(obj_file_is_framed_and_coloured),
+        cmocka_unit_test(bad_lesson_flags_are_usage_errors),
+        cmocka_unit_test(missing_obj_fails_without_output),
+        cmocka_unit_test(unwritable_output_fails_cleanly),
+        cmocka_unit_test(bad_camera_is_a_usage_error),
+    };
+    return cmocka_run_group_tests_name("02_zbuffer command line", tests, NULL, NULL);
+}
