@@ -1,6 +1,7 @@
 /* guard_band.c: see guard_band.h. */
 #include "guard_band.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -34,25 +35,35 @@ bool guard_band_contains(const ScreenVertex *v, int n, int width, int height)
     return true;
 }
 
-/* The point where segment a-b crosses the side. The fraction t is computed
- * from halved coordinates so that a - b cannot overflow even for coordinates
- * near the largest double; the crossing coordinate is set to the limit exactly. */
+/* a + (b - a) t, with halved operands so that b - a cannot overflow even for
+ * coordinates near the largest double. */
+static double lerp_from(double a, double b, double t)
+{
+    return a + ((b / 2 - a / 2) * t) * 2;
+}
+
+/* The point where the edge from the inside corner a to the outside corner b
+ * crosses the side. Stepping from the inside corner, a + (b - a) t rather than
+ * a (1 - t) + b t, keeps the point exact when b is enormous and t tiny (with b
+ * at 1e30, 1 - t rounds to 1 and a would be lost), and gives two faces that
+ * share the edge exactly the same point whichever way each walks it. The
+ * crossing coordinate is set to the limit exactly. */
 static ScreenVertex crossing(ScreenVertex a, ScreenVertex b, BandSide s, DepthLinearity linear)
 {
     double ca = coordinate(a, s.along_y) / 2, cb = coordinate(b, s.along_y) / 2;
     double t = (s.limit / 2 - ca) / (cb - ca);
     ScreenVertex p;
     if (s.along_y) {
-        p.x = a.x * (1 - t) + b.x * t;
+        p.x = lerp_from(a.x, b.x, t);
         p.y = s.limit;
     } else {
         p.x = s.limit;
-        p.y = a.y * (1 - t) + b.y * t;
+        p.y = lerp_from(a.y, b.y, t);
     }
     if (linear == LINEAR_D)
-        p.d = a.d * (1 - t) + b.d * t;                     /* d linear on the screen */
+        p.d = lerp_from(a.d, b.d, t);                  /* d linear on the screen */
     else
-        p.d = 1 / ((1 / a.d) * (1 - t) + (1 / b.d) * t); /* 1/d linear on the screen */
+        p.d = 1 / lerp_from(1 / a.d, 1 / b.d, t);      /* 1/d linear on the screen */
     return p;
 }
 
@@ -66,8 +77,10 @@ static int clip_side(const ScreenVertex *in, int n, BandSide s, DepthLinearity l
         bool a_in = inside(a, s), b_in = inside(b, s);
         if (a_in)
             out[m++] = a;
-        if (a_in != b_in)
-            out[m++] = crossing(a, b, s, linear);
+        if (a_in && !b_in)
+            out[m++] = crossing(a, b, s, linear); /* leaving: from a, inside */
+        else if (!a_in && b_in)
+            out[m++] = crossing(b, a, s, linear); /* entering: from b, inside */
     }
     return m;
 }
@@ -77,6 +90,11 @@ int guard_band_clip(const ScreenVertex *in, int n, int width, int height,
 {
     if (n < 3)
         return 0;
+    /* A corner that is not a number has no place on the screen: no picture of
+     * the face can be right, so none is drawn. */
+    for (int i = 0; i < n; i++)
+        if (!isfinite(in[i].x) || !isfinite(in[i].y) || !isfinite(in[i].d))
+            return 0;
     if (guard_band_contains(in, n, width, height)) {
         memcpy(out, in, (size_t)n * sizeof *in);
         return n;

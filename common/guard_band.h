@@ -42,7 +42,8 @@ bool guard_band_contains(const ScreenVertex *v, int n, int width, int height);
  * flag is set; finite coordinates, d > 0) against the guard band into out,
  * which holds GUARD_BAND_MAX_OUT(n) vertices. Returns the number of vertices
  * of the result: n when it was inside already (out is a copy), 0 when nothing
- * is left (it is far off screen, or n < 3). */
+ * is left (it is far off screen, n < 3, or a corner's x, y or d is not a
+ * finite number). */
 int guard_band_clip(const ScreenVertex *in, int n, int width, int height,
                     DepthLinearity linear, ScreenVertex *out);
 

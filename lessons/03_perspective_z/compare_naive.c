@@ -1,0 +1,75 @@
+/* compare_naive.c: the picture of --compare-naive (see compare_naive.h). */
+#include "compare_naive.h"
+
+#include <string.h>
+
+#include "compare.h"
+#include "file.h"
+#include "raster.h"
+
+#define AGREED_DIM 2       /* pixels both rules agree on are shown at half brightness */
+#define DIFF_PATH_MAX 4096 /* room for the path of the diff picture of --compare */
+
+const Rgb NAIVE_MARK = {255, 0, 255};
+
+static bool same_path(const char *a, const char *b)
+{
+    return a && b && (strcmp(a, b) == 0 || same_file(a, b));
+}
+
+bool compare_naive_path_ok(const Options *opt, const char *path, Error *err)
+{
+    const char *name[] = {"--obj", "--compare", "--out", "--depth-out", "--overdraw-out"};
+    const char *other[] = {opt->obj, opt->compare, opt->out, opt->depth_out, opt->overdraw_out};
+    for (size_t i = 0; i < sizeof name / sizeof name[0]; i++)
+        if (same_path(other[i], path))
+            return error_set(err, "%s and --compare-naive both name %s", name[i], path);
+    char diff[DIFF_PATH_MAX];
+    if (opt->compare && opt->out && compare_diff_path(opt->out, diff, sizeof diff) &&
+        same_path(diff, path))
+        return error_set(err, "--compare-naive names %s, where the diff picture of --out goes",
+                         path);
+    return true;
+}
+
+static bool draw_with(Render *r, const Rasterizer *rz, Target *t, Error *err)
+{
+    return target_init(t, r->camera.width, r->camera.height, rz->clear_value, err) &&
+           render_faces(r, t, rz, NULL, 0, NULL, NULL, err);
+}
+
+/* Marks the pixels whose winning face differs; returns how many there are. */
+static long mark_differences(const Target *right, const Target *naive, Image *im)
+{
+    long differing = 0;
+    for (int y = 0; y < im->height; y++)
+        for (int x = 0; x < im->width; x++) {
+            size_t i = (size_t)y * (size_t)im->width + (size_t)x;
+            Rgb c = image_get(im, x, y);
+            Rgb dim = {(uint8_t)(c.r / AGREED_DIM), (uint8_t)(c.g / AGREED_DIM),
+                       (uint8_t)(c.b / AGREED_DIM)};
+            bool differs = right->face[i] != naive->face[i];
+            differing += differs;
+            image_set(im, x, y, differs ? NAIVE_MARK : dim);
+        }
+    return differing;
+}
+
+bool compare_with_naive(Render *r, const Options *opt, const char *path, long *differing,
+                        Error *err)
+{
+    FaceCounts counts = r->counts; /* render_faces adds to them: restored below */
+    Target right = {0}, naive = {0};
+    Image im = {0};
+    bool ok = draw_with(r, &ZBUFFER, &right, err) && draw_with(r, &ZBUFFER_NAIVE, &naive, err) &&
+              render_image(r, &right, &ZBUFFER, opt->shade, &im, err);
+    if (ok) {
+        *differing = mark_differences(&right, &naive, &im);
+        ok = render_make_parent_dirs(path, err) && image_write_png(&im, path, err);
+    }
+    image_free(&im);
+    target_free(&right);
+    target_free(&naive);
+    r->counts = counts;
+    return ok;
+}

@@ -1,0 +1,27 @@
+/* compare_naive.h: where the naive rule goes wrong (--compare-naive FILE.png).
+ *
+ * The scene is drawn twice, once with each rule (ZBUFFER and ZBUFFER_NAIVE),
+ * and the picture of the right one is written with every pixel where the
+ * naive rule shows another face (or a face where there is none, or none
+ * where there is one) marked in NAIVE_MARK; every other pixel keeps its
+ * colour at half brightness. */
+#ifndef COMPARE_NAIVE_H
+#define COMPARE_NAIVE_H
+
+#include "render.h"
+
+extern const Rgb NAIVE_MARK; /* magenta */
+
+/* The picture may not replace an input or another output (--obj, --compare,
+ * --out, --depth-out, --overdraw-out, the diff picture of --compare): false
+ * with err set when path names one of them, a usage error. */
+bool compare_naive_path_ok(const Options *opt, const char *path, Error *err);
+
+/* Draws r with both rules, writes the picture to path (colours as opt->shade
+ * says) and counts the marked pixels into *differing. r's face counts are
+ * left as they were, so that the summary speaks of the main render only.
+ * False (err set) when out of memory or the picture cannot be written. */
+bool compare_with_naive(Render *r, const Options *opt, const char *path, long *differing,
+                        Error *err);
+
+#endif

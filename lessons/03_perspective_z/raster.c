@@ -1,0 +1,212 @@
+/* raster.c: lesson 03, perspective-correct depth (see raster.h and docs/03_perspective_z.md). */
+#include "raster.h"
+
+#include <math.h>
+
+#include "guard_band.h"
+
+/* What each rule takes to be linear on the screen: 1/d (right) or d itself
+ * (naive). A triangle cut at the guard band gets its new corners' d by the
+ * same rule. */
+static DepthLinearity depth_linearity(DepthInterp rule)
+{
+    return rule == DEPTH_NAIVE ? LINEAR_D : LINEAR_INV_D;
+}
+
+const Rasterizer ZBUFFER = {"03_perspective_z", INFINITY, draw_face, NULL};
+const Rasterizer ZBUFFER_NAIVE = {"03_perspective_z", INFINITY, draw_face_naive, NULL};
+
+/* Rounds a screen position to the nearest 1/256 of a pixel. From here on
+ * every coverage decision is made in integers, so it is exact: two triangles
+ * that share an edge see exactly the same edge. */
+FixedPoint snap_to_fixed(ScreenVertex v)
+{
+    FixedPoint p = {(int64_t)floor(v.x * SUBPIXEL_ONE + 0.5),
+                    (int64_t)floor(v.y * SUBPIXEL_ONE + 0.5)};
+    return p;
+}
+
+/* Pixel (x, y) is sampled at its centre (x + 0.5, y + 0.5). */
+FixedPoint pixel_centre(int x, int y)
+{
+    FixedPoint p = {(int64_t)x * SUBPIXEL_ONE + SUBPIXEL_HALF,
+                    (int64_t)y * SUBPIXEL_ONE + SUBPIXEL_HALF};
+    return p;
+}
+
+/* E(a, b, p) = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x):
+ * twice the signed area of triangle a, b, p. On this y-down screen it is
+ * positive when p lies to the right of a->b as one walks from a to b,
+ * seen on the screen, zero on the line through a and b. */
+int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p)
+{
+    return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+}
+
+/* For a triangle walked clockwise on the screen (positive area), the inside
+ * is to the right of each edge. A top edge is exactly horizontal with the
+ * inside below it: it runs to the right (dy = 0, dx > 0). A left edge has the
+ * inside to its right: it runs up the screen (dy < 0). */
+bool is_top_left(FixedPoint a, FixedPoint b)
+{
+    int64_t dx = b.x - a.x, dy = b.y - a.y;
+    bool top = dy == 0 && dx > 0;
+    bool left = dy < 0;
+    return top || left;
+}
+
+/* Inside an edge: strictly, or exactly on it if it is a top or left edge. */
+bool edge_covers(int64_t e, bool top_left)
+{
+    return e > 0 || (e == 0 && top_left);
+}
+
+/* The pixels whose centres can lie in the triangle, clamped to the screen.
+ * Pixel x has its centre in [lo, hi] when x * 256 + 128 >= lo, i.e.
+ * x >= ceil((lo - 128) / 256), and x * 256 + 128 <= hi, i.e.
+ * x <= floor((hi - 128) / 256). */
+static int first_pixel(int64_t lo)
+{
+    int64_t n = lo - SUBPIXEL_HALF;
+    return (int)(n >= 0 ? (n + SUBPIXEL_ONE - 1) / SUBPIXEL_ONE : -((-n) / SUBPIXEL_ONE));
+}
+
+static int last_pixel(int64_t hi)
+{
+    int64_t n = hi - SUBPIXEL_HALF;
+    return (int)(n >= 0 ? n / SUBPIXEL_ONE : -((-n + SUBPIXEL_ONE - 1) / SUBPIXEL_ONE));
+}
+
+static int64_t min3(int64_t a, int64_t b, int64_t c)
+{
+    int64_t m = a < b ? a : b;
+    return m < c ? m : c;
+}
+
+static int64_t max3(int64_t a, int64_t b, int64_t c)
+{
+    int64_t m = a > b ? a : b;
+    return m > c ? m : c;
+}
+
+static int clamp(int v, int lo, int hi)
+{
+    return v < lo ? lo : v > hi ? hi : v;
+}
+
+PixelBox bounding_box(FixedPoint a, FixedPoint b, FixedPoint c, int width, int height)
+{
+    PixelBox box = {first_pixel(min3(a.x, b.x, c.x)), first_pixel(min3(a.y, b.y, c.y)),
+                    last_pixel(max3(a.x, b.x, c.x)), last_pixel(max3(a.y, b.y, c.y))};
+    /* Clamping keeps an empty box empty: x0 > width - 1 stays above x1 <= width - 1. */
+    box.x0 = clamp(box.x0, 0, width);
+    box.y0 = clamp(box.y0, 0, height);
+    box.x1 = clamp(box.x1, -1, width - 1);
+    box.y1 = clamp(box.y1, -1, height - 1);
+    return box;
+}
+
+/* w_i = E_i / area, where E_i is the edge function of the edge opposite
+ * corner i: the share of the triangle's area that lies across from corner i. */
+Barycentric barycentric_weights(int64_t e0, int64_t e1, int64_t e2, int64_t area)
+{
+    Barycentric w = {(double)e0 / (double)area, (double)e1 / (double)area,
+                     (double)e2 / (double)area};
+    return w;
+}
+
+/* Under perspective 1/d, not d, is linear on the screen: divide the plane
+ * equation a x + b y + c z = e of a face by d, and 1/d comes out as an affine
+ * function of x / d and y / d, which are affine in the screen position. So
+ * blend 1/d with the weights and take the reciprocal:
+ *     1/d = w0 / d0 + w1 / d1 + w2 / d2,   d = 1 / (1/d)
+ * Weights 0.5, 0.3, 0.2 on depths 2, 3, 4: 1/d = 0.25 + 0.1 + 0.05 = 0.4, d = 2.5. */
+double interpolate_depth(Barycentric w, double d0, double d1, double d2)
+{
+    double inv_d = w.w0 / d0 + w.w1 / d1 + w.w2 / d2;
+    return 1 / inv_d;
+}
+
+/* Lesson 02's naive way, kept for --depth-interp naive: d = w0 d0 + w1 d1 + w2 d2,
+ * as if d were linear on the screen. The same weights give 2.7, too far. */
+double interpolate_depth_naive(Barycentric w, double d0, double d1, double d2)
+{
+    return w.w0 * d0 + w.w1 * d1 + w.w2 * d2;
+}
+
+/* The z-buffer test: the fragment wins when it is nearer than what the pixel
+ * holds, d < stored. A tie keeps the face drawn first. */
+bool depth_test(Target *t, size_t i, int face, float d)
+{
+    float stored = t->depth[i];
+    bool passed = d < stored;
+    target_record(t, i, face, d, stored, passed);
+    if (passed) {
+        t->depth[i] = d;
+        t->face[i] = face;
+    }
+    return passed;
+}
+
+void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, int face,
+                   double far, DepthInterp rule)
+{
+    FixedPoint p0 = snap_to_fixed(a), p1 = snap_to_fixed(b), p2 = snap_to_fixed(c);
+    int64_t area = edge_function(p0, p1, p2); /* twice the signed area */
+    if (area == 0)
+        return; /* no area, no pixel centre strictly inside: nothing to draw */
+    if (area < 0) {
+        /* Counter-clockwise on the screen: both windings are drawn, so walk
+         * it the other way round (swap corners 1 and 2). */
+        FixedPoint tp = p1; p1 = p2; p2 = tp;
+        ScreenVertex tv = b; b = c; c = tv;
+        area = -area;
+    }
+    bool top_left0 = is_top_left(p1, p2); /* edge opposite corner 0 */
+    bool top_left1 = is_top_left(p2, p0); /* edge opposite corner 1 */
+    bool top_left2 = is_top_left(p0, p1); /* edge opposite corner 2 */
+
+    PixelBox box = bounding_box(p0, p1, p2, t->width, t->height);
+    for (int y = box.y0; y <= box.y1; y++)
+        for (int x = box.x0; x <= box.x1; x++) {
+            FixedPoint p = pixel_centre(x, y);
+            int64_t e0 = edge_function(p1, p2, p);
+            int64_t e1 = edge_function(p2, p0, p);
+            int64_t e2 = edge_function(p0, p1, p);
+            if (!edge_covers(e0, top_left0) || !edge_covers(e1, top_left1) ||
+                !edge_covers(e2, top_left2))
+                continue;
+            Barycentric w = barycentric_weights(e0, e1, e2, area);
+            double d = rule == DEPTH_NAIVE ? interpolate_depth_naive(w, a.d, b.d, c.d)
+                                           : interpolate_depth(w, a.d, b.d, c.d);
+            if (d > far)
+                continue; /* beyond the far plane: discarded before any test */
+            depth_test(t, (size_t)y * (size_t)t->width + (size_t)x, face, (float)d);
+        }
+}
+
+/* A face is drawn as its triangles. One reaching far off the screen is first
+ * cut down to the guard band (common/guard_band.h), where fixed point holds
+ * it; what is left is a convex polygon, drawn as a fan. */
+static void draw_face_by_rule(Target *t, const ScreenFace *f, const DrawContext *ctx,
+                              DepthInterp rule)
+{
+    for (int k = 0; k < f->n - 2; k++) {
+        const Tri *tri = &f->tris[k];
+        ScreenVertex corners[3] = {f->v[tri->c[0]], f->v[tri->c[1]], f->v[tri->c[2]]};
+        ScreenVertex band[GUARD_BAND_MAX_OUT(3)];
+        int n = guard_band_clip(corners, 3, t->width, t->height, depth_linearity(rule), band);
+        for (int j = 1; j + 1 < n; j++)
+            draw_triangle(t, band[0], band[j], band[j + 1], f->face, ctx->far, rule);
+    }
+}
+
+void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+{
+    draw_face_by_rule(t, f, ctx, DEPTH_PERSPECTIVE);
+}
+
+void draw_face_naive(Target *t, const ScreenFace *f, const DrawContext *ctx)
+{
+    draw_face_by_rule(t, f, ctx, DEPTH_NAIVE);
+}

@@ -1,0 +1,23 @@
+/* compare_naive.h: where stepping d instead of 1/d goes wrong
+ * (--compare-naive FILE.png), as in lesson 03.
+ *
+ * The scene is drawn twice, once with each rule (SCANLINE_ZBUFFER and
+ * SCANLINE_ZBUFFER_NAIVE), and the picture of the right one is written with
+ * every pixel where the naive rule shows another face (or a face where there
+ * is none, or none where there is one) marked in NAIVE_MARK; every other
+ * pixel keeps its colour at half brightness. */
+#ifndef COMPARE_NAIVE_H
+#define COMPARE_NAIVE_H
+
+#include "render.h"
+
+extern const Rgb NAIVE_MARK; /* magenta */
+
+/* Draws r with both rules, writes the picture to path (colours as opt->shade
+ * says) and counts the marked pixels into *differing. r's face counts are
+ * left as they were, so that the summary speaks of the main render only.
+ * False (err set) when out of memory or the picture cannot be written. */
+bool compare_with_naive(Render *r, const Options *opt, const char *path, long *differing,
+                        Error *err);
+
+#endif

@@ -1,0 +1,348 @@
+/* scanline.c: lesson 04's z-buffer. The buffer holds 1/d, cleared to 0; a
+ * convex polygon is drawn whole by walking its left and right edges down the
+ * screen and filling the span between them on every row. See scanline.h and
+ * docs/04_scanline_inverse_z.md. */
+#include "scanline.h"
+
+#include <math.h>
+
+#include "guard_band.h"
+
+#define S ((int64_t)SUBPIXEL_ONE) /* sub-pixel units per pixel */
+#define HALF_PIXEL ((int64_t)SUBPIXEL_HALF)
+/* A polygon reaching past the guard band is clipped in a buffer on the stack
+ * when it has at most this many corners; a bigger one is drawn as its triangles. */
+#define CLIP_MAX_CORNERS 32
+
+/* A polygon corner as the rasterizer uses it: snapped, with its 1/d. */
+typedef struct {
+    int64_t x, y; /* sub-pixel units */
+    double inv_d; /* "projection stores 1/d" (d itself under DEPTH_NAIVE) */
+} Corner;
+
+/* One side of the polygon: the chain of edges from the top corner to the
+ * bottom corner, going round the polygon in direction dir (+1 or -1). */
+typedef struct {
+    const ScreenVertex *v;
+    int n, at, bottom, dir;
+    DepthInterp rule;
+} Chain;
+
+/* Integer division rounding down / up, for any sign of a (b > 0). */
+static int64_t floor_div(int64_t a, int64_t b)
+{
+    int64_t q = a / b;
+    return (a % b != 0 && a < 0) ? q - 1 : q;
+}
+
+static int64_t ceil_div(int64_t a, int64_t b)
+{
+    return -floor_div(-a, b);
+}
+
+/* The first row whose centre y + 0.5 is at or below y (sub-pixel units). */
+static int64_t first_row_at_or_below(int64_t y)
+{
+    return ceil_div(y - HALF_PIXEL, S);
+}
+
+/* A screen coordinate rounded to the nearest 1/256 of a pixel, exactly as
+ * lesson 03 rounds it: from here on coverage is decided in integers. */
+static int64_t snap(double pixels)
+{
+    return (int64_t)floor(pixels * S + 0.5);
+}
+
+/* 1/d is computed at the corners only; between them it is stepped. */
+static Corner corner(const ScreenVertex *v, DepthInterp rule)
+{
+    Corner c = {snap(v->x), snap(v->y), rule == DEPTH_NAIVE ? v->d : 1.0 / v->d};
+    return c;
+}
+
+void clear_depth(Target *t)
+{
+    size_t n = (size_t)t->width * (size_t)t->height;
+    for (size_t i = 0; i < n; i++) {
+        t->depth[i] = CLEARED_INV_DEPTH;
+        t->face[i] = NO_FACE;
+    }
+}
+
+/* inline: draw_span runs it for every pixel, where a function call would cost
+ * as much as the test itself. */
+inline bool depth_test(Target *t, size_t i, int face, float inv_d)
+{
+    float stored = t->depth[i];
+    /* Nearer means larger 1/d: the comparison is reversed because the stored
+     * value is reversed. Strict, so that a tie keeps the first fragment. */
+    bool passed = inv_d > stored;
+    target_record(t, i, face, inv_d, stored, passed);
+    if (passed) {
+        t->depth[i] = inv_d;
+        t->face[i] = face;
+    }
+    return passed;
+}
+
+bool edge_setup(Edge *e, int64_t ax, int64_t ay, double inv_a, int64_t bx, int64_t by,
+                double inv_b, int y_first)
+{
+    int64_t dx = bx - ax, dy = by - ay;
+    if (dy <= 0)
+        return false; /* a horizontal edge crosses no row centre */
+    int64_t y0 = first_row_at_or_below(ay);
+    if (y0 < y_first)
+        y0 = y_first; /* start at the first row asked for, not above it */
+    e->y_end = (int)first_row_at_or_below(by);
+    if (y0 >= e->y_end)
+        return false;
+
+    /* Where the edge crosses the centre yc of row y0, minus half a pixel:
+     *     x_edge - 0.5 = num / den   (pixels),
+     *     num = (ax - 0.5) * dy + (yc - ay) * dx,   den = S * dy   (sub-pixel units).
+     * The first pixel centre at or right of x_edge is ceil(num / den), and it
+     * lies rem / den to the right of the edge. */
+    int64_t yc = y0 * S + HALF_PIXEL;
+    int64_t num = (ax - HALF_PIXEL) * dy + (yc - ay) * dx;
+    e->den = S * dy;
+    e->x_pixel = ceil_div(num, e->den);
+    e->rem = e->x_pixel * e->den - num;
+    /* One row down, num grows by S * dx = step_pixel * den + step_rem. */
+    e->step_pixel = floor_div(dx, dy);
+    e->step_rem = S * dx - e->step_pixel * e->den;
+
+    /* 1/d is linear along the edge on the screen: d(1/d)/dy is a constant. */
+    double dy_pixels = (double)dy / S;
+    e->inv_d_step = (inv_b - inv_a) / dy_pixels;
+    e->inv_d = inv_a + ((double)(yc - ay) / S) * e->inv_d_step;
+    return true;
+}
+
+void edge_step(Edge *e)
+{
+    e->x_pixel += e->step_pixel;
+    e->rem -= e->step_rem;
+    if (e->rem < 0) { /* the fraction ran out: the edge moved one pixel more */
+        e->rem += e->den;
+        e->x_pixel++;
+    }
+    e->inv_d += e->inv_d_step;
+}
+
+void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, double inv_far,
+               DepthInterp rule)
+{
+    int64_t x_first = left->x_pixel < 0 ? 0 : left->x_pixel;
+    int64_t x_stop = right->x_pixel > t->width ? t->width : right->x_pixel;
+    if (x_first >= x_stop)
+        return;
+
+    /* x_right - x_left, from the exact edge positions (no large numbers cancel). */
+    double left_frac = (double)left->rem / (double)left->den;
+    double right_frac = (double)right->rem / (double)right->den;
+    double width = (double)(right->x_pixel - left->x_pixel) + left_frac - right_frac;
+    /* d(1/d)/dx: constant along the span. */
+    double step = width > 0 ? (right->inv_d - left->inv_d) / width : 0.0;
+    /* 1/d at the first pixel centre, (x_first + 0.5) - x_left to the right of the edge. */
+    double inv_d = left->inv_d + ((double)(x_first - left->x_pixel) + left_frac) * step;
+
+    size_t i = (size_t)y * (size_t)t->width + (size_t)x_first;
+    for (int64_t x = x_first; x < x_stop; x++, i++) {
+        /* Under DEPTH_NAIVE the value stepped was d: the test still wants 1/d. */
+        double fragment = rule == DEPTH_NAIVE ? 1.0 / inv_d : inv_d;
+        if (fragment >= inv_far) /* d <= far: a fragment beyond the far plane is discarded */
+            depth_test(t, i, face, (float)fragment);
+        inv_d += step; /* one addition per pixel */
+    }
+}
+
+/* Sets up the next edge of the chain that crosses rows at or after y. */
+static bool chain_next_edge(Chain *c, int y, Edge *e)
+{
+    while (c->at != c->bottom) {
+        int next = (c->at + c->dir + c->n) % c->n;
+        Corner a = corner(&c->v[c->at], c->rule), b = corner(&c->v[next], c->rule);
+        c->at = next;
+        if (edge_setup(e, a.x, a.y, a.inv_d, b.x, b.y, b.inv_d, y))
+            return true;
+    }
+    return false;
+}
+
+/* Rows y_first .. y_stop - 1, top to bottom: each row is one span from the
+ * left edge to the right edge; at a corner, the next edge of that side takes
+ * over, set up fresh from its own top. */
+static void walk_edges(Target *t, Chain *left_chain, Chain *right_chain, int y_first, int y_stop,
+                       int face, double inv_far, DepthInterp rule)
+{
+    Edge left, right;
+    if (!chain_next_edge(left_chain, y_first, &left) ||
+        !chain_next_edge(right_chain, y_first, &right))
+        return;
+    for (int y = y_first; y < y_stop; y++) {
+        if (y >= left.y_end && !chain_next_edge(left_chain, y, &left))
+            return;
+        if (y >= right.y_end && !chain_next_edge(right_chain, y, &right))
+            return;
+        draw_span(t, y, &left, &right, face, inv_far, rule);
+        edge_step(&left);
+        edge_step(&right);
+    }
+}
+
+static bool corner_in_range(const ScreenVertex *v)
+{
+    return isfinite(v->x) && isfinite(v->y) && isfinite(v->d) && v->d > 0 &&
+           fabs(v->x) <= SCANLINE_MAX_COORD && fabs(v->y) <= SCANLINE_MAX_COORD;
+}
+
+/* Convex on the screen, after snapping: every turn has the same sign (or none)
+ * and y changes direction at most twice going round, so the polygon is one
+ * loop with one left side and one right side. *turn gets the sign of the
+ * turns: > 0 when the polygon goes clockwise on the screen (y down). */
+static bool convex_on_screen(const ScreenVertex *v, int n, int *turn)
+{
+    int sign = 0, y_turns = 0, last_dy = 0;
+    for (int i = 0; i < n; i++) {
+        const ScreenVertex *a = &v[i], *b = &v[(i + 1) % n], *c = &v[(i + 2) % n];
+        int64_t abx = snap(b->x) - snap(a->x), aby = snap(b->y) - snap(a->y);
+        int64_t bcx = snap(c->x) - snap(b->x), bcy = snap(c->y) - snap(b->y);
+        int64_t cross = abx * bcy - aby * bcx;
+        int s = (cross > 0) - (cross < 0);
+        if (s != 0 && sign != 0 && s != sign)
+            return false;
+        if (s != 0)
+            sign = s;
+        int dy = (aby > 0) - (aby < 0);
+        if (dy != 0 && last_dy != 0 && dy != last_dy)
+            y_turns++;
+        if (dy != 0)
+            last_dy = dy;
+    }
+    /* Close the loop: the direction of the first edge that moves in y. */
+    for (int i = 0; i < n; i++) {
+        int64_t aby = snap(v[(i + 1) % n].y) - snap(v[i].y);
+        int dy = (aby > 0) - (aby < 0);
+        if (dy != 0) {
+            if (last_dy != 0 && dy != last_dy)
+                y_turns++;
+            break;
+        }
+    }
+    *turn = sign;
+    return y_turns <= 2;
+}
+
+bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far,
+                  DepthInterp rule)
+{
+    if (n < 3)
+        return true; /* nothing to draw */
+    for (int i = 0; i < n; i++)
+        if (!corner_in_range(&v[i]))
+            return false;
+    int turn;
+    if (!convex_on_screen(v, n, &turn))
+        return false;
+
+    int top = 0, bottom = 0;
+    for (int i = 1; i < n; i++) {
+        if (snap(v[i].y) < snap(v[top].y))
+            top = i;
+        if (snap(v[i].y) > snap(v[bottom].y))
+            bottom = i;
+    }
+    /* Going forward from the top corner of a clockwise polygon (on a y-down
+     * screen) runs down its right side; going backward runs down its left. */
+    Chain forward = {v, n, top, bottom, +1, rule}, backward = {v, n, top, bottom, -1, rule};
+    Chain *left = turn > 0 ? &backward : &forward;
+    Chain *right = turn > 0 ? &forward : &backward;
+
+    /* Only rows on the screen are walked, whatever the polygon's size. */
+    int64_t y_first = first_row_at_or_below(snap(v[top].y));
+    int64_t y_stop = first_row_at_or_below(snap(v[bottom].y));
+    if (y_first < 0)
+        y_first = 0;
+    if (y_stop > t->height)
+        y_stop = t->height;
+    if (y_first < y_stop)
+        walk_edges(t, left, right, (int)y_first, (int)y_stop, face, 1.0 / far, rule);
+    return true;
+}
+
+/* Draws polygon v[0 .. n-1], clipped to the guard band first when it reaches
+ * beyond it. False when it was not drawn (not convex on the screen, or too
+ * many corners to clip here): then its triangles are drawn instead. */
+static bool draw_clipped_polygon(Target *t, const ScreenVertex *v, int n, int face, double far,
+                                 DepthInterp rule)
+{
+    if (guard_band_contains(v, n, t->width, t->height))
+        return draw_polygon(t, v, n, face, far, rule);
+    if (n > CLIP_MAX_CORNERS)
+        return false;
+    /* New corners get their depth by the rule's own idea of what is linear. */
+    DepthLinearity linear = rule == DEPTH_NAIVE ? LINEAR_D : LINEAR_INV_D;
+    ScreenVertex clipped[GUARD_BAND_MAX_OUT(CLIP_MAX_CORNERS)];
+    int m = guard_band_clip(v, n, t->width, t->height, linear, clipped);
+    if (m < 3 || draw_polygon(t, clipped, m, face, far, rule))
+        return true;
+    /* Cut far off the screen and snapped, a polygon can come out a hair from
+     * convex: draw it as a fan of triangles, as lessons 02 and 03 do. */
+    for (int j = 1; j + 1 < m; j++) {
+        ScreenVertex tri[3] = {clipped[0], clipped[j], clipped[j + 1]};
+        draw_polygon(t, tri, 3, face, far, rule);
+    }
+    return true;
+}
+
+static bool corners_are_numbers(const ScreenFace *f)
+{
+    for (int i = 0; i < f->n; i++)
+        if (!(isfinite(f->v[i].x) && isfinite(f->v[i].y) && isfinite(f->v[i].d) && f->v[i].d > 0))
+            return false;
+    return true;
+}
+
+static void draw_face_by(Target *t, const ScreenFace *f, const DrawContext *ctx, DepthInterp rule)
+{
+    if (!corners_are_numbers(f))
+        return; /* the pipeline drops such faces; draw nothing if one gets here */
+    if (f->convex && draw_clipped_polygon(t, f->v, f->n, f->face, ctx->far, rule))
+        return;
+    /* A non-convex face: its ear-clipped triangles, each one a convex polygon. */
+    for (int k = 0; k < f->n - 2; k++) {
+        ScreenVertex tri[3];
+        for (int j = 0; j < 3; j++)
+            tri[j] = f->v[f->tris[k].c[j]];
+        draw_clipped_polygon(t, tri, 3, f->face, ctx->far, rule);
+    }
+}
+
+void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+{
+    draw_face_by(t, f, ctx, DEPTH_PERSPECTIVE);
+}
+
+void draw_face_naive(Target *t, const ScreenFace *f, const DrawContext *ctx)
+{
+    draw_face_by(t, f, ctx, DEPTH_NAIVE);
+}
+
+/* A stored 1/d back as the view depth d; 0 (nothing drawn) is infinitely far. */
+static double stored_to_depth(float stored)
+{
+    return stored > 0 ? 1.0 / stored : INFINITY;
+}
+
+double nearest_distance_at(const Target *t, int x, int y)
+{
+    return stored_to_depth(t->depth[(size_t)y * (size_t)t->width + (size_t)x]);
+}
+
+const Rasterizer SCANLINE_ZBUFFER = {
+    "04_scanline_inverse_z", CLEARED_INV_DEPTH, draw_face, stored_to_depth,
+};
+const Rasterizer SCANLINE_ZBUFFER_NAIVE = {
+    "04_scanline_inverse_z", CLEARED_INV_DEPTH, draw_face_naive, stored_to_depth,
+};

@@ -1,0 +1,14 @@
+/* test_trace.c: lesson 03's --trace names the face the picture shows, on 1000
+ * random pixels (tests/shared/trace_suite.inc). Lesson 03 keeps view depth d,
+ * smaller is nearer, as lesson 02 does (CONVENTIONS.md); only the way d is
+ * interpolated changed. */
+#include "raster.h"
+
+#define TRACE_RASTERIZER ZBUFFER
+#define TRACE_RULE {"depth buffer", "d", "face", SMALLER_IS_NEARER}
+#include "../shared/trace_suite.inc"
+
+int main(void)
+{
+    return run_trace_suite("03_perspective_z trace");
+}
