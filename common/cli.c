@@ -12,6 +12,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ascii.h"
+#include "compare.h"
+#include "file.h"
 #include "image.h"
 
 /* The camera that frames a mesh when the lesson has no scene to borrow one from:
@@ -27,6 +30,8 @@
 /* up is parallel to the view direction when the sine of the angle between them
  * is below this: the camera's right axis (f x up) would be noise. */
 #define PARALLEL_SINE_MIN 1e-6
+/* Room for the name of --out's diff picture (a longer one is not checked). */
+#define PATH_TEXT_MAX 4096
 /* A value quoted in a message is cut to this many characters. */
 #define QUOTE_MAX 48
 
@@ -65,10 +70,13 @@ static const SharedFlag SHARED_FLAGS[SHARED_FLAG_COUNT] = {
     [FLAG_OVERDRAW_OUT] = {"--overdraw-out", CLI_OVERDRAW_OUT, "FILE.pgm",
                            "also write how many fragments each pixel tested"},
     [FLAG_TRACE] = {"--trace", CLI_TRACE, "X,Y", "log every fragment tested at pixel (X, Y)"},
-    [FLAG_ASCII] = {"--ascii", CLI_ASCII, NULL, "also print the buffer as text"},
+    [FLAG_ASCII] = {"--ascii", CLI_ASCII, NULL,
+                    "also print the depth buffer as digits, 0 = nearest (up to 120x60)"},
     [FLAG_COMPARE] = {"--compare", CLI_COMPARE, "REF.png",
-                      "compare the picture with REF.png (exit 3 if they differ)"},
-    [FLAG_STEPS] = {"--steps", CLI_STEPS, "DIR", "save a picture of every step into DIR"},
+                      "compare the picture with REF.png, exit 3 if they differ; the diff "
+                      "picture goes next to --out as NAME.diff.png"},
+    [FLAG_STEPS] = {"--steps", CLI_STEPS, "DIR",
+                    "save step_NNNN.png and step_NNNN_depth.png into DIR after every face"},
     [FLAG_HELP] = {"--help", 0, NULL, "print this help and exit"},
     [FLAG_VERSION] = {"--version", 0, NULL, "print the version and exit"},
 };
@@ -108,14 +116,14 @@ static const char *flag_metavar(const LessonCli *spec, SharedFlagId id)
 /* ---- Values ---------------------------------------------------------------- */
 
 /* s as it may appear in a message: a very long argument is cut, so that the
- * message still ends with what is wrong with it. */
+ * message still ends with what is wrong with it, and a control character (a
+ * newline, an escape) shows as '?', so that the message stays one line. */
 static const char *quoted(const char *s, char buf[QUOTE_MAX + 4])
 {
-    size_t n = strlen(s);
-    if (n <= QUOTE_MAX)
-        return s;
-    memcpy(buf, s, QUOTE_MAX);
-    memcpy(buf + QUOTE_MAX, "...", 4);
+    size_t n = 0;
+    for (; s[n] != '\0' && n < QUOTE_MAX; n++)
+        buf[n] = iscntrl((unsigned char)s[n]) ? '?' : s[n];
+    strcpy(buf + n, s[n] != '\0' ? "..." : "");
     return buf;
 }
 
@@ -402,6 +410,58 @@ static bool check_trace(Parser *p)
     return true;
 }
 
+/* --ascii is read by eye: one character per pixel, so a small buffer only. */
+static bool check_ascii(Parser *p)
+{
+    const Options *o = p->opt;
+    if (!o->ascii)
+        return true;
+    if (trace_is_column(p->spec)) {
+        if (o->width > ASCII_MAX_WIDTH)
+            return error_set(p->err, "--ascii: the row is %d pixels wide; --ascii prints at "
+                                     "most %d (use --width)", o->width, ASCII_MAX_WIDTH);
+        return true;
+    }
+    if (o->width > ASCII_MAX_WIDTH || o->height > ASCII_MAX_HEIGHT)
+        return error_set(p->err, "--ascii: the image is %dx%d; --ascii prints at most %dx%d "
+                                 "(use --width and --height)", o->width, o->height,
+                         ASCII_MAX_WIDTH, ASCII_MAX_HEIGHT);
+    return true;
+}
+
+/* The diff picture of --compare is written next to --out: it may not be REF
+ * itself (check_paths sees to --out), or the reference would be overwritten. */
+static bool check_compare(Parser *p)
+{
+    const Options *o = p->opt;
+    if (!o->compare || !o->out)
+        return true;
+    char diff[PATH_TEXT_MAX];
+    if (compare_diff_path(o->out, diff, sizeof diff) &&
+        (strcmp(o->compare, diff) == 0 || same_file(o->compare, diff)))
+        return error_set(p->err, "--compare names %s, where the diff picture of --out goes",
+                         diff);
+    return true;
+}
+
+/* An output must not replace an input, nor another output: "--obj and --out
+ * both name m.obj". Names are compared as given and, for files that exist
+ * already, by what they point to (a.png and ./a.png are the same file). */
+static bool check_paths(Parser *p)
+{
+    enum { FIRST_OUTPUT = 2, PATH_COUNT = 5 };
+    const Options *o = p->opt;
+    const char *name[PATH_COUNT] = {"--obj", "--compare", "--out", "--depth-out",
+                                    "--overdraw-out"};
+    const char *path[PATH_COUNT] = {o->obj, o->compare, o->out, o->depth_out, o->overdraw_out};
+    for (int j = FIRST_OUTPUT; j < PATH_COUNT; j++)
+        for (int i = 0; i < j; i++)
+            if (path[i] && path[j] &&
+                (strcmp(path[i], path[j]) == 0 || same_file(path[i], path[j])))
+                return error_set(p->err, "%s and %s both name %s", name[i], name[j], path[j]);
+    return true;
+}
+
 static void print_version(const LessonCli *spec)
 {
     printf("%s (hidden-surface lessons) %s\n", spec->program, SERIES_VERSION);
@@ -464,7 +524,7 @@ int cli_parse_quiet(const LessonCli *spec, int argc, char **argv, Options *opt, 
         if (status != CLI_CONTINUE)
             return status;
     }
-    if (!check_trace(&p))
+    if (!check_trace(&p) || !check_ascii(&p) || !check_compare(&p) || !check_paths(&p))
         return EXIT_USAGE;
     return CLI_CONTINUE;
 }
@@ -555,6 +615,10 @@ void cli_print_help(const LessonCli *spec, FILE *out)
         const char *help = SHARED_FLAGS[id].help;
         if (id == FLAG_TRACE && trace_is_column(spec))
             help = "log every fragment tested at column X";
+        if (id == FLAG_ASCII && trace_is_column(spec))
+            help = "also print the buffer as digits, 0 = nearest (up to 120 columns)";
+        if (id == FLAG_STEPS && trace_is_column(spec))
+            help = "save step_NNNN.png and step_NNNN_depth.png into DIR after every segment";
         print_flag(out, column, SHARED_FLAGS[id].flag, flag_metavar(spec, (SharedFlagId)id),
                    help, default_text(spec, (SharedFlagId)id, buf));
     }

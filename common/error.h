@@ -29,7 +29,8 @@ bool error_set(Error *err, const char *fmt, ...)
 #endif
     ;
 
-/* Prints "<program>: error: <msg>" on stderr and returns status. */
+/* Prints "<program>: error: <msg>" on stderr, one line (a control character in
+ * msg prints as '?'), and returns status. */
 int error_report(const char *program, const Error *err, int status);
 
 #endif

@@ -302,6 +302,12 @@ void depth_to_grey(const float *depth, Image *out)
             dmax = fmax(dmax, depth[i]);
         }
     }
+    depth_to_grey_between(depth, dmin, dmax, out);
+}
+
+void depth_to_grey_between(const float *depth, double dmin, double dmax, Image *out)
+{
+    size_t pixels = (size_t)out->width * (size_t)out->height;
     /* grey = 255 + (48 - 255) * (d - dmin) / (dmax - dmin), rounded to nearest:
      * linear in d, so equal steps in depth are equal steps in grey. */
     double range = dmax - dmin;
@@ -314,6 +320,7 @@ void depth_to_grey(const float *depth, Image *out)
             continue;
         }
         double t = range > 0.0 ? (depth[i] - dmin) / range : 0.0;
+        t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t; /* outside a given range: its nearer end */
         uint8_t grey = (uint8_t)lround(GREY_NEAR + (GREY_FAR - GREY_NEAR) * t);
         p[0] = p[1] = p[2] = grey;
     }

@@ -66,6 +66,9 @@ extern const Rgb DEPTH_BACKGROUND;
 /* depth: view depths d, +infinity (or any non-finite value) for background.
  * The finite range [dmin, dmax] of the buffer maps to grey 255 (near) .. 48 (far). */
 void depth_to_grey(const float *depth, Image *out);
+/* The same on a range given by the caller (--steps keeps one scale for every
+ * frame); a finite d outside [dmin, dmax] takes the grey of the nearer end. */
+void depth_to_grey_between(const float *depth, double dmin, double dmax, Image *out);
 
 typedef struct {
     long differing;        /* pixels where any channel differs by more than the tolerance */

@@ -246,6 +246,11 @@ bool render_write(const Render *r, const Target *t, const Rasterizer *rz, const 
     return true;
 }
 
+bool render_make_parent_dirs(const char *path, Error *err)
+{
+    return make_parent_dirs(path, err);
+}
+
 void render_print_warnings(const Render *r, const char *program)
 {
     for (int i = 0; i < r->mesh.nwarnings; i++)

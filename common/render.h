@@ -132,6 +132,10 @@ bool render_image(const Render *r, const Target *t, const Rasterizer *rz, ShadeM
 bool render_write(const Render *r, const Target *t, const Rasterizer *rz, const Options *opt,
                   Error *err);
 
+/* Creates the missing directories of path, as render_write does for its
+ * outputs: for the outputs a lesson writes itself. */
+bool render_make_parent_dirs(const char *path, Error *err);
+
 /* "<program>: warning: <msg>" on stderr for each mesh warning. */
 void render_print_warnings(const Render *r, const char *program);
 

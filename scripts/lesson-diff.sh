@@ -18,9 +18,27 @@ find_lesson() {
 }
 from=$(find_lesson "$1")
 to=$(find_lesson "$2")
+# The lessons are compared as they read without their solution markers
+# (comments for make handout, docs/teaching.md): copies, cleaned, in a
+# temporary directory with the same relative paths.
+regions="$PWD/scripts/solution-regions.awk"
+clean=$(mktemp -d)
+trap 'rm -rf "$clean"' EXIT
+for d in "$from" "$to"; do
+    mkdir -p "$clean/$d"
+    for f in "$d"/*; do
+        awk -v mode=clean -f "$regions" "$f" >"$clean/$f"
+    done
+done
+cd "$clean"
 if [ "$stat" -eq 0 ]; then
     # -N: a file that exists in one lesson only shows as wholly added or removed.
-    diff -ruN "$from" "$to" || [ $? -eq 1 ]
+    # The files' dates are cut from the --- and +++ lines, so that the diff of
+    # two lessons (and docs/diffs/, which keeps it) changes only with the code.
+    diff -ruN "$from" "$to" | awk '
+        /^diff / { header = 2; print; next }
+        header > 0 && /^(---|\+\+\+) / { header--; sub(/\t.*/, "") }
+        { print }'
     exit 0
 fi
 for f in $( (ls "$from"; ls "$to") | sort -u); do

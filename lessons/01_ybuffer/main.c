@@ -6,14 +6,22 @@
  *
  *   build/bin/01_ybuffer                       out/01_ybuffer.png and a summary
  *   build/bin/01_ybuffer --steps out/steps     the render and y-buffer after each segment
- *   build/bin/01_ybuffer --order 312           the same segments, another order */
+ *   build/bin/01_ybuffer --order 312           the same segments, another order
+ *   build/bin/01_ybuffer --trace 400           every test made at column 400
+ *   build/bin/01_ybuffer --width 120 --ascii   the y-buffer as digits
+ *   build/bin/01_ybuffer --compare REF.png     this picture against REF.png, exit 3 if different */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "ascii.h"
 #include "cli.h"
+#include "compare.h"
 #include "file.h"
 #include "pictures.h"
+#include "steps.h"
+#include "trace.h"
 #include "world.h"
 #include "ybuffer.h"
 
@@ -30,11 +38,14 @@ static const LessonCli CLI = {
     .program = "01_ybuffer",
     .purpose = "draw segments of a 2-D world seen from above into one row of pixels, "
                "keeping the nearest (largest) y per column",
-    .groups = CLI_STEPS,
+    .groups = CLI_TRACE | CLI_ASCII | CLI_COMPARE | CLI_STEPS,
     .extra = FLAGS,
     .n_extra = FLAG_COUNT,
     .defaults = {.out = "out/01_ybuffer.png", .width = 800, .height = 16},
 };
+
+/* What --trace and --ascii show: the y-buffer keeps y, and larger is nearer. */
+static const DepthRule Y_RULE = {"y-buffer", "y", "segment", LARGER_IS_NEARER};
 
 /* Two outputs with one name would overwrite each other; none may replace the input. */
 static bool check_outputs(const Options *opt, Error *err)
@@ -58,12 +69,18 @@ static bool load_segments(const Options *opt, Segment **segs, int *count, Error 
     return file ? read_segments(file, segs, count, err) : default_segments(segs, count, err);
 }
 
-/* Clear, then draw each segment in turn; with --steps, pictures after each. */
+/* Clear, then draw each segment in turn; with --steps, pictures after each;
+ * with --trace, every test at one column logged. */
 static bool render(YBuffer *yb, const Segment *segs, int count, const int *order,
                    const Options *opt, Error *err)
 {
     GreyScale scale = grey_scale_of(segs, count, yb->width);
     const char *dir = opt->steps_dir;
+    if (dir && count > STEPS_MAX_FACES)
+        return error_set(err, "--steps: there are %d segments; --steps writes two pictures "
+                              "per segment and takes at most %d", count, STEPS_MAX_FACES);
+    if (opt->trace_set)
+        ybuffer_trace_column(yb, opt->trace_x);
     clear_ybuffer(yb);
     if (dir && !write_step_pictures(yb, segs, scale, opt->height, dir, 0, err))
         return false;
@@ -98,6 +115,33 @@ static bool write_outputs(const YBuffer *yb, const Segment *segs, int count, con
     return ok;
 }
 
+/* --trace, --ascii and --compare, once the picture is written (common/trace.h,
+ * ascii.h, compare.h). Returns EXIT_OK, EXIT_IMAGES_DIFFER or EXIT_RUN_FAILED. */
+static int report_tools(const YBuffer *yb, const Segment *segs, const Options *opt, Error *err)
+{
+    if (opt->trace_set) {
+        int x = opt->trace_x, owner = yb->owner[x];
+        char where[32];
+        snprintf(where, sizeof where, "column %d", x);
+        trace_print(stdout, &yb->trace, &Y_RULE, where, owner == NO_SEGMENT ? NO_FACE : owner + 1,
+                    y_as_stored(yb->y[x]));
+    }
+    if (opt->ascii) {
+        float row[ASCII_MAX_WIDTH];
+        for (int x = 0; x < yb->width; x++)
+            row[x] = yb->owner[x] == NO_SEGMENT ? NAN : (float)yb->y[x];
+        ascii_print(stdout, row, yb->width, 1, &Y_RULE);
+    }
+    if (!opt->compare)
+        return EXIT_OK;
+    Image im;
+    if (!render_picture(yb, segs, opt->height, &im, err))
+        return EXIT_RUN_FAILED;
+    int status = compare_picture(stdout, &im, opt->compare, opt->out, err);
+    image_free(&im);
+    return status;
+}
+
 static void print_written(const Options *opt, int count)
 {
     printf("wrote %s", opt->out);
@@ -107,7 +151,7 @@ static void print_written(const Options *opt, int count)
         printf(", %s", opt->extra[FLAG_SCENE_OUT]);
     printf("\n");
     if (opt->steps_dir)
-        printf("wrote steps 0 to %d into %s (stepK_render.png, stepK_ybuffer.png)\n", count,
+        printf("wrote steps 0 to %d into %s (step_NNNN.png, step_NNNN_depth.png)\n", count,
                opt->steps_dir);
 }
 
@@ -138,9 +182,9 @@ int main(int argc, char **argv)
     } else {
         print_summary(stdout, &yb, segs, count, order);
         print_written(&opt, count);
-        status = EXIT_OK;
+        status = report_tools(&yb, segs, &opt, &err);
     }
-    if (status != EXIT_OK)
+    if (status == EXIT_USAGE || status == EXIT_RUN_FAILED)
         error_report(CLI.program, &err, status);
     ybuffer_free(&yb);
     free(order);

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "file.h"
+#include "steps.h"
 
 const Rgb RENDER_BACKGROUND = {0, 0, 0};
 const Rgb SCREEN_EMPTY = {64, 64, 64};
@@ -14,8 +15,6 @@ const Rgb SCREEN_EMPTY = {64, 64, 64};
  * nearest white, farthest a dark grey that still differs from black. */
 #define GREY_NEAR 255
 #define GREY_FAR 48
-/* Room for "/step<number>_ybuffer.png" and its NUL. */
-#define STEP_NAME_MAX 40
 
 static void fill_column(Image *im, int x, Rgb c)
 {
@@ -171,22 +170,14 @@ bool write_picture(const Image *im, const char *path, Error *err)
 bool write_step_pictures(const YBuffer *yb, const Segment *segs, GreyScale scale, int height,
                          const char *dir, int step, Error *err)
 {
-    size_t size = strlen(dir) + STEP_NAME_MAX;
-    char *path = malloc(size);
-    if (!path)
-        return error_set(err, "out of memory");
-    Image im;
-    snprintf(path, size, "%s/step%d_render.png", dir, step);
-    bool ok = render_picture(yb, segs, height, &im, err);
+    Image render, strip;
+    if (!render_picture(yb, segs, height, &render, err))
+        return false;
+    bool ok = ybuffer_picture(yb, scale, height, &strip, err);
     if (ok) {
-        ok = write_picture(&im, path, err);
-        image_free(&im);
+        ok = steps_write(dir, step, &render, &strip, err); /* common/steps.h */
+        image_free(&strip);
     }
-    snprintf(path, size, "%s/step%d_ybuffer.png", dir, step);
-    if (ok && (ok = ybuffer_picture(yb, scale, height, &im, err))) {
-        ok = write_picture(&im, path, err);
-        image_free(&im);
-    }
-    free(path);
+    image_free(&render);
     return ok;
 }

@@ -50,7 +50,9 @@ int world_to_row(int y);
 /* Writes a PNG, creating its directory first if it is missing. */
 bool write_picture(const Image *im, const char *path, Error *err);
 
-/* stepK_render.png and stepK_ybuffer.png in dir: the state after K segments. */
+/* step_NNNN.png (the render) and step_NNNN_depth.png (the y-buffer strip) in
+ * dir, as every lesson's --steps names them (common/steps.h): the state after
+ * `step` segments. */
 bool write_step_pictures(const YBuffer *yb, const Segment *segs, GreyScale scale, int height,
                          const char *dir, int step, Error *err);
 

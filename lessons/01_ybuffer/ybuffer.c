@@ -6,6 +6,8 @@
 
 bool ybuffer_init(YBuffer *yb, int width, Error *err)
 {
+    TraceLog no_trace = {-1, NULL, 0, 0, false};
+    yb->trace = no_trace;
     yb->width = width;
     yb->y = malloc((size_t)width * sizeof *yb->y);
     yb->owner = malloc((size_t)width * sizeof *yb->owner);
@@ -21,8 +23,10 @@ void ybuffer_free(YBuffer *yb)
 {
     free(yb->y);
     free(yb->owner);
+    free(yb->trace.entries);
     yb->y = NULL;
     yb->owner = NULL;
+    yb->trace.entries = NULL;
 }
 
 void clear_ybuffer(YBuffer *yb)
@@ -32,6 +36,13 @@ void clear_ybuffer(YBuffer *yb)
         yb->owner[x] = NO_SEGMENT;
     }
     yb->stats = (FragmentStats){0, 0, 0};
+    yb->trace.count = 0;
+    yb->trace.overflowed = false;
+}
+
+void ybuffer_trace_column(YBuffer *yb, int x)
+{
+    yb->trace.pixel = x;
 }
 
 /* a / b rounded towards minus infinity (C's "/" rounds towards zero), b > 0. */
@@ -69,6 +80,20 @@ int segment_y_at(const Segment *s, int x)
     return yl + (int)round_half_up(num, den);
 }
 
+/* Counts the test, and logs it when x is the traced column (--trace): what
+ * target_record does for the z-buffer. Segments are numbered from 1 there, as
+ * in the summary and in --order. */
+static void record_test(YBuffer *yb, int x, int index, int y, bool passed)
+{
+    yb->stats.tested++;
+    if (passed)
+        yb->stats.passed++;
+    else
+        yb->stats.failed++;
+    if (x == yb->trace.pixel)
+        trace_log_append(&yb->trace, index + 1, (float)y, y_as_stored(yb->y[x]), passed);
+}
+
 void draw_segment(YBuffer *yb, const Segment *s, int index)
 {
     int left = s->x0 < s->x1 ? s->x0 : s->x1;
@@ -80,14 +105,12 @@ void draw_segment(YBuffer *yb, const Segment *s, int index)
     if (right > yb->width - 1)
         right = yb->width - 1;
     for (int x = left; x <= right; x++) {
-        int y = segment_y_at(s, x);     /* where the segment is in this column */
-        yb->stats.tested++;
-        if (depth_test(y, yb->y[x])) {  /* nearer than all seen here so far? */
-            yb->y[x] = y;               /* keep its y, */
-            yb->owner[x] = index;       /* and the column takes its colour */
-            yb->stats.passed++;
-        } else {
-            yb->stats.failed++;
+        int y = segment_y_at(s, x);            /* where the segment is in this column */
+        bool nearer = depth_test(y, yb->y[x]); /* nearer than all seen here so far? */
+        record_test(yb, x, index, y, nearer);  /* counted, and logged for --trace */
+        if (nearer) {
+            yb->y[x] = y;                      /* keep its y, */
+            yb->owner[x] = index;              /* and the column takes its colour */
         }
     }
 }

@@ -15,6 +15,7 @@
 #define YBUFFER_H
 
 #include <limits.h>
+#include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
 
@@ -40,6 +41,7 @@ typedef struct {
     int *y;             /* the y-buffer: nearest y seen per column */
     int *owner;         /* the segment that won each column (index), NO_SEGMENT if none */
     FragmentStats stats; /* column tests made, passed, failed */
+    TraceLog trace;      /* --trace: every test made at one column (target.h) */
 } YBuffer;
 
 bool ybuffer_init(YBuffer *yb, int width, Error *err);
@@ -47,6 +49,15 @@ void ybuffer_free(YBuffer *yb);
 
 /* Step 1: every column back to "nothing seen", no owner, counts to zero. */
 void clear_ybuffer(YBuffer *yb);
+
+/* --trace X: log every test made at column x from now on. */
+void ybuffer_trace_column(YBuffer *yb, int x);
+
+/* A stored y as the trace shows it: a cleared column holds minus infinity. */
+static inline float y_as_stored(int y)
+{
+    return y == YBUFFER_CLEARED ? -INFINITY : (float)y;
+}
 
 /* floor(p / q + 1/2) for q > 0: p / q rounded to the nearest integer, halves
  * up (2.5 -> 3, -2.5 -> -2), in exact integer arithmetic. */

@@ -3,12 +3,14 @@
  * Parse the command line, load the scene, clear the buffers, draw every face
  * through the z-buffer (raster.c), write the pictures and report.
  * --painter draws back to front without depth (painter.c); --bug makes one of
- * two classic mistakes on purpose (bugs.c). */
+ * two classic mistakes on purpose (bugs.c); --trace, --ascii, --compare and
+ * --steps watch the depth test decide (common/inspect.h). */
 #include <stdio.h>
 #include <string.h>
 
 #include "bugs.h"
 #include "cli.h"
+#include "inspect.h"
 #include "painter.h"
 #include "raster.h"
 #include "render.h"
@@ -23,12 +25,15 @@ static const LessonFlag FLAGS[FLAG_COUNT] = {
 static const LessonCli CLI = {
     .program = "02_zbuffer",
     .purpose = "Lesson 02: the z-buffer, with depth interpolated linearly on the screen.",
-    .groups = CLI_SCENE | CLI_CAMERA | CLI_SHADE | CLI_DEPTH_OUT | CLI_OVERDRAW_OUT,
+    .groups = CLI_ALL_3D,
     .extra = FLAGS,
     .n_extra = FLAG_COUNT,
     .defaults = {.out = "out/02_zbuffer.png", .width = 800, .height = 600,
                  .scene = "triangles3", .shade = SHADE_FLAT},
 };
+
+/* What --trace and --ascii show: the buffer keeps view depth d, smaller is nearer. */
+static const DepthRule DEPTH = {"depth buffer", "d", "face", SMALLER_IS_NEARER};
 
 typedef enum { ZBUFFER_RIGHT, PAINTER, BUG_SEPARATE_BUFFERS, BUG_CLEAR_ZERO } Method;
 
@@ -53,10 +58,13 @@ static bool choose_method(const Options *opt, Method *m, Error *err)
         *m = BUG_CLEAR_ZERO;
     else if (bug)
         return error_set(err, "--bug: '%s' is not one of separate-buffers, clear-zero", bug);
+    if (*m != ZBUFFER_RIGHT && *m != BUG_CLEAR_ZERO && opt->steps_dir)
+        return error_set(err, "--steps follows one depth buffer face by face; it cannot be "
+                              "used with --painter or --bug separate-buffers");
     return true;
 }
 
-static bool draw(Method m, Render *r, Target *t, Error *err)
+static bool draw(Method m, Render *r, Target *t, Inspection *ins, Error *err)
 {
     switch (m) {
     case PAINTER: return draw_painter(r, t, &ZBUFFER, err);
@@ -64,7 +72,7 @@ static bool draw(Method m, Render *r, Target *t, Error *err)
     case ZBUFFER_RIGHT:
     case BUG_CLEAR_ZERO: break;
     }
-    return render_faces(r, t, &ZBUFFER, NULL, 0, NULL, NULL, err); /* in mesh order */
+    return render_faces(r, t, &ZBUFFER, NULL, 0, inspect_after_face, ins, err); /* mesh order */
 }
 
 int main(int argc, char **argv)
@@ -85,16 +93,19 @@ int main(int argc, char **argv)
     render_print_warnings(&r, CLI.program);
 
     Target t;
+    Inspection ins;
     float clear = method == BUG_CLEAR_ZERO ? CLEAR_ZERO_BUG : ZBUFFER.clear_value;
     bool ok = target_init(&t, opt.width, opt.height, clear, &err) && /* clear */
-              draw(method, &r, &t, &err) &&                          /* draw */
+              inspect_begin(&ins, &r, &t, &ZBUFFER, &DEPTH, &opt, &err) && /* watch */
+              draw(method, &r, &t, &ins, &err) &&                    /* draw */
               render_write(&r, &t, &ZBUFFER, &opt, &err);            /* write */
     if (ok) {
         render_print_summary(stdout, &r, &t, &ZBUFFER, &opt);        /* report */
         if (METHOD_NOTE[method])
             printf("  %s\n", METHOD_NOTE[method]);
     }
+    status = ok ? inspect_report(stdout, &ins, &t, &err) : EXIT_RUN_FAILED; /* tools */
     target_free(&t);
     render_free(&r);
-    return ok ? EXIT_OK : error_report(CLI.program, &err, EXIT_RUN_FAILED);
+    return status == EXIT_RUN_FAILED ? error_report(CLI.program, &err, status) : status;
 }

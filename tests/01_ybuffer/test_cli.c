@@ -175,23 +175,23 @@ static void steps_write_a_render_and_a_ybuffer_per_segment(void **state)
     RunResult r = run_program(PROGRAM, args);
     assert_int_equal(r.status, 0);
     run_result_free(&r);
-    static const char *const NAMES[] = {"step0_render.png", "step0_ybuffer.png",
-                                        "step1_render.png", "step1_ybuffer.png",
-                                        "step2_render.png", "step2_ybuffer.png",
-                                        "step3_render.png", "step3_ybuffer.png"};
+    static const char *const NAMES[] = {"step_0000.png", "step_0000_depth.png",
+                                        "step_0001.png", "step_0001_depth.png",
+                                        "step_0002.png", "step_0002_depth.png",
+                                        "step_0003.png", "step_0003_depth.png"};
     for (int i = 0; i < 8; i++)
         if (!file_exists(path_join(steps.path, NAMES[i])))
             fail_msg("--steps did not write %s", NAMES[i]);
     /* After step 1 only red is there: columns 20..744. */
-    Image s1 = read_png(path_join(steps.path, "step1_render.png"));
+    Image s1 = read_png(path_join(steps.path, "step_0001.png"));
     assert_int_equal(image_get(&s1, 19, 0).r, 0);
     assert_int_equal(image_get(&s1, 20, 0).r, 255);
     assert_int_equal(image_get(&s1, 744, 0).r, 255);
     assert_int_equal(image_get(&s1, 745, 0).r, 0);
     image_free(&s1);
     /* The last step is the final picture. */
-    Image s3 = read_png(path_join(steps.path, "step3_render.png")), final = read_png(out.path);
-    expect_same_pixels(&s3, &final, "step3_render.png against --out");
+    Image s3 = read_png(path_join(steps.path, "step_0003.png")), final = read_png(out.path);
+    expect_same_pixels(&s3, &final, "step_0003.png against --out");
     image_free(&s3);
     image_free(&final);
 }

@@ -250,9 +250,12 @@ static void bad_lesson_flags_are_usage_errors(void **state)
     expect_error(a2, 2, "02_zbuffer: error: --painter and --bug cannot be used together\n");
     const char *a3[] = {"--bug", NULL};
     expect_error(a3, 2, "02_zbuffer: error: --bug needs a value\n");
-    const char *a4[] = {"--ascii", NULL}; /* a flag of the series this lesson does not take */
-    expect_error(a4, 2, "02_zbuffer: error: --ascii does not apply to 02_zbuffer (it prints no "
-                        "text picture)\n");
+    const char *a4[] = {"--ascii", NULL}; /* the default 800x600 is too big to read as text */
+    expect_error(a4, 2, "02_zbuffer: error: --ascii: the image is 800x600; --ascii prints at "
+                        "most 120x60 (use --width and --height)\n");
+    const char *a5[] = {"--painter", "--steps", "frames", NULL}; /* no one depth buffer to show */
+    expect_error(a5, 2, "02_zbuffer: error: --steps follows one depth buffer face by face; it "
+                        "cannot be used with --painter or --bug separate-buffers\n");
 }
 
 static void missing_obj_fails_without_output(void **state)

@@ -86,6 +86,10 @@ static const BadLine BAD_LINES[] = {
     {&SPEC_3D, {"--width", "12.5"}, "--width: '12.5' is not a whole number"},
     {&SPEC_3D, {"--width", ""}, "--width: '' is not a whole number"},
     {&SPEC_3D, {"--width", " 5"}, "--width: ' 5' is not a whole number"},
+    /* a control character would break the one-line message: it shows as '?' */
+    {&SPEC_3D, {"--width", "5\nx"}, "--width: '5?x' is not a whole number"},
+    {&SPEC_3D, {"--shade", "\033[31mred"}, "--shade: '?[31mred' is not one of flat, id, depth"},
+    {&SPEC_3D, {"--foo\r\nx"}, "unknown flag '--foo?\?x' (try --help)"},
     {&SPEC_3D, {"--height", "99999999999999999999"},
      "--height: 99999999999999999999 is out of range (1 to 16384)"},
     /* numbers and vectors */
@@ -114,6 +118,12 @@ static const BadLine BAD_LINES[] = {
     {&SPEC_3D, {"--width", "10", "20"}, "unexpected argument '20'"},
     {&SPEC_3D, {"--out", ""}, "--out: the file name is empty"},
     {&SPEC_3D, {"--steps", ""}, "--steps: the directory name is empty"},
+    /* an output may not replace an input or another output */
+    {&SPEC_3D, {"--obj", "m.obj", "--out", "m.obj"}, "--obj and --out both name m.obj"},
+    {&SPEC_3D, {"--out", "a.pfm", "--depth-out", "a.pfm"}, "--out and --depth-out both name a.pfm"},
+    {&SPEC_3D, {"--depth-out", "x", "--overdraw-out", "x"},
+     "--depth-out and --overdraw-out both name x"},
+    {&SPEC_3D, {"--obj", "out/02_test.png"}, "--obj and --out both name out/02_test.png"},
     /* scene, shade */
     {&SPEC_3D, {"--scene", "triangles3", "--obj", "m.obj"},
      "--scene and --obj cannot be used together"},
@@ -152,6 +162,16 @@ static const BadLine BAD_LINES[] = {
     {&SPEC_1D, {"--trace", "800"}, "--trace: column 800 is outside the 800-pixel-wide image"},
     {&SPEC_1D, {"--width", "50", "--trace", "-2"},
      "--trace: column -2 is outside the 50-pixel-wide image"},
+    /* --ascii prints one character per pixel: at most 120x60 (120 in one dimension) */
+    {&SPEC_3D, {"--ascii"},
+     "--ascii: the image is 800x600; --ascii prints at most 120x60 (use --width and --height)"},
+    {&SPEC_3D, {"--ascii", "--width", "120", "--height", "61"},
+     "--ascii: the image is 120x61; --ascii prints at most 120x60 (use --width and --height)"},
+    {&SPEC_1D, {"--width", "121", "--ascii"},
+     "--ascii: the row is 121 pixels wide; --ascii prints at most 120 (use --width)"},
+    /* --compare's diff picture goes next to --out: it may not overwrite REF */
+    {&SPEC_3D, {"--out", "p.png", "--compare", "p.diff.png"},
+     "--compare names p.diff.png, where the diff picture of --out goes"},
 };
 
 static void bad_lines_give_their_exact_message_and_status_2(void **state)
@@ -251,7 +271,7 @@ static void no_arguments_give_the_lesson_defaults(void **state)
 static void every_flag_lands_in_its_field(void **state)
 {
     (void)state;
-    const char *args[] = {"--out", "a.png", "--width", "320", "--height", "240",
+    const char *args[] = {"--out", "a.png", "--width", "120", "--height", "60", /* --ascii max */
                           "--eye", "-1,2.5,3", "--target", "0,0,-1", NULL};
     const char *more[] = {"--up", "0,1,0", "--fovy", "45", "--near", "0.5", "--far", "50",
                           "--shade", "depth", "--trace", "10,20", NULL};
@@ -271,8 +291,8 @@ static void every_flag_lands_in_its_field(void **state)
     Error err = {""};
     assert_int_equal(cli_parse_quiet(&SPEC_3D, argc, argv, &opt, &err), CLI_CONTINUE);
     assert_string_equal(opt.out, "a.png");
-    assert_int_equal(opt.width, 320);
-    assert_int_equal(opt.height, 240);
+    assert_int_equal(opt.width, 120);
+    assert_int_equal(opt.height, 60);
     assert_true(opt.eye_set && opt.eye.x == -1 && opt.eye.y == 2.5 && opt.eye.z == 3);
     assert_true(opt.target_set && opt.target.x == 0 && opt.target.z == -1);
     assert_true(opt.up_set && opt.up.y == 1);

@@ -1,0 +1,33 @@
+/* depth_rule.c: see depth_rule.h. */
+#include "depth_rule.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+/* Six digits read well; nine always give back the same float (FLT_DECIMAL_DIG). */
+#define FEWEST_DIGITS 6
+#define ROUND_TRIP_DIGITS 9
+
+bool rule_is_nearer(const DepthRule *rule, double a, double b)
+{
+    return rule->nearer == SMALLER_IS_NEARER ? a < b : a > b;
+}
+
+const char *format_stored(float v, char buf[STORED_TEXT_MAX])
+{
+    if (isinf(v)) {
+        snprintf(buf, STORED_TEXT_MAX, "%s", v > 0 ? "inf" : "-inf");
+        return buf;
+    }
+    if (isnan(v)) {
+        snprintf(buf, STORED_TEXT_MAX, "nan");
+        return buf;
+    }
+    for (int digits = FEWEST_DIGITS; digits <= ROUND_TRIP_DIGITS; digits++) {
+        snprintf(buf, STORED_TEXT_MAX, "%.*g", digits, (double)v);
+        if (strtof(buf, NULL) == v)
+            break;
+    }
+    return buf;
+}
