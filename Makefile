@@ -5,6 +5,9 @@
 #   make test             build and run every test; LESSON=03 runs one lesson's
 #   make update-expected LESSON=NN   accept the current pictures of lesson NN's tests
 #   make diff FROM=02 TO=03   what lesson 03 changes in lesson 02's code
+#   make sanitize         make test and make run again, under ASan and UBSan
+#   make fuzz SECONDS=60  each libFuzzer target of tests/fuzz/ (needs clang)
+#   make valgrind         make run under valgrind memcheck
 #   make clean
 #
 # A new lesson is a new directory lessons/NN_name/ with a main.c: nothing here
@@ -13,7 +16,7 @@
 BUILD    ?= build
 CC       ?= cc
 OPT      ?= -O2 -g
-# CONVENTIONS.md: C11, warnings are errors, no contraction of a*b+c into fma so
+# docs/conventions.md: C11, warnings are errors, no contraction of a*b+c into fma so
 # that pictures do not change with the optimisation level.
 WARN     := -std=c11 -Wall -Wextra -Werror -pedantic
 CFLAGS   += $(OPT) $(WARN) -ffp-contract=off
@@ -76,8 +79,10 @@ $(BUILD)/tools/%: $(BUILD)/obj/tools/%.o $(COMMON_OBJ)
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS)
 
 # A test binary links common/, the test helpers and its lesson (if any).
+# test_group: <group>/test_x -> <group> (a call, for the same reason).
+test_group = $(patsubst %/,%,$(dir $(1)))
 $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(COMMON_OBJ) $(SUPPORT_OBJ) \
-                  $$(call lesson_objs,$$(patsubst %/,%,$$(dir $$*)))
+                  $$(call lesson_objs,$$(call test_group,$$*))
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ -o $@ $(CMOCKA_LIBS) $(STB_LIBS) $(LDLIBS)
 
@@ -119,6 +124,7 @@ clean:
 #
 # A sanitizer or valgrind report ends the program with status 86, which no
 # lesson uses: a test that expects status 1 cannot mistake one for a failure.
+# The sanitized build keeps OPT (-O2 -g): some warnings depend on the level.
 
 SANITIZE_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 SANITIZE_ENV   := ASAN_OPTIONS=exitcode=86:detect_leaks=1 \
@@ -128,7 +134,7 @@ SANITIZE_ENV   := ASAN_OPTIONS=exitcode=86:detect_leaks=1 \
 
 sanitize:
 	@$(SANITIZE_ENV) $(MAKE) --no-print-directory BUILD=build/sanitize \
-	    OPT="-O1 -g $(SANITIZE_FLAGS)" test run
+	    OPT="$(OPT) $(SANITIZE_FLAGS)" test run
 
 # A target is tests/fuzz/fuzz_<name>.c. When <name> is a lesson's directory it
 # links that lesson's objects but main.c: one binary per lesson, as lessons
@@ -145,9 +151,10 @@ fuzz:
 	@$(MAKE) --no-print-directory BUILD=$(FUZZ_BUILD) CC=$(FUZZ_CC) OPT="$(FUZZ_FLAGS)" fuzz-build
 	@$(SANITIZE_ENV) sh scripts/fuzz.sh $(FUZZ_BUILD) $(SECONDS) $(FUZZ_RUN)
 
-fuzz-build: $(FUZZ_NAMES:%=$(BUILD)/fuzz/fuzz_%)
+fuzz-build: $(FUZZ_RUN:%=$(BUILD)/fuzz/fuzz_%)
 
-$(BUILD)/obj/tests/fuzz/fuzz_%.o: CPPFLAGS += -Ilessons/$*
+# ($* is the stem of the object rule: tests/fuzz/fuzz_<name>)
+$(BUILD)/obj/tests/fuzz/fuzz_%.o: CPPFLAGS += -Ilessons/$(patsubst tests/fuzz/fuzz_%,%,$*)
 $(BUILD)/fuzz/fuzz_%: $(BUILD)/obj/tests/fuzz/fuzz_%.o $(COMMON_OBJ) $$(call lesson_objs,$$*)
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) -fsanitize=fuzzer $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS)
@@ -162,6 +169,42 @@ valgrind: $(BINS)
 	    echo "== $$l under valgrind"; $(VALGRIND) $(BUILD)/bin/$$l; done
 	@echo "valgrind: no error and no leak in $(words $(LESSONS)) lessons"
 
+# ---- Classroom: hand a lesson out, grade it (docs/teaching.md) -------------
+#
+#   make handout LESSON=03 [DEST=dir] [ONLY=1]
+#       the student's tree: lesson 03 with each solution region replaced by
+#       its stub and a TODO(student) hint (scripts/handout.sh); ONLY=1 leaves
+#       the other lessons out. DEST defaults to $(BUILD)/handout/<lesson>.
+#   make grade [LESSON=NN] [TEST=name] [TIME_LIMIT=seconds]
+#       runs the lessons' tests, each under a time limit (10 s by default),
+#       prints a score table with the points of tests/<lesson>/points.txt and
+#       writes $(BUILD)/grade/results.json in Gradescope's format. TEST=name
+#       grades one test; the exit status then says if it passed.
+GRADE_LESSONS := $(if $(LESSON),$(filter $(LESSON)%,$(LESSONS)),$(LESSONS))
+GRADE_TESTS   := $(patsubst tests/%.c,$(BUILD)/tests/%,\
+                   $(foreach l,$(GRADE_LESSONS),$(wildcard tests/$(l)/test_*.c)))
+
+.PHONY: handout grade grade-build
+
+handout:
+	@sh scripts/handout.sh --build "$(BUILD)" $(if $(filter 1,$(ONLY)),--only) \
+	    $(if $(DEST),--dest "$(DEST)") "$(LESSON)"
+
+# Student code that does not compile costs the points of the tests that need
+# it, not the grade: the build goes on past errors (-k), and grade.sh scores
+# whatever was built. What an earlier build left is removed first, so that a
+# test never runs an old build of the code.
+grade:
+	@test -n "$(GRADE_LESSONS)" || { echo "grade: error: no lesson LESSON=$(LESSON) in lessons/" >&2; exit 2; }
+	@mkdir -p $(BUILD)/grade
+	@rm -f $(GRADE_TESTS) $(GRADE_LESSONS:%=$(BUILD)/bin/%)
+	@$(MAKE) --no-print-directory -k grade-build >$(BUILD)/grade/build.log 2>&1 || \
+	    { cat $(BUILD)/grade/build.log; echo "grade: the build failed (above): what did not build scores 0"; }
+	@sh scripts/grade.sh --build "$(BUILD)" $(if $(TIME_LIMIT),--time-limit "$(TIME_LIMIT)") \
+	    $(if $(TEST),--test "$(TEST)") $(GRADE_LESSONS)
+
+grade-build: $(BUILD)/tools/time_limit $(BINS) $(TOOLS) $(GRADE_TESTS)
+
 # ---- make bench: how fast the rasterizers are (docs/performance.md) ---------
 # One binary per lesson, as lessons share function names: tests/bench/bench.c
 # with BENCH_RASTERIZER naming the lesson's Rasterizer, plus bench_limit.
@@ -171,7 +214,7 @@ valgrind: $(BINS)
 BENCH_DIR     := $(BUILD)/bench
 BENCH_CFLAGS  := -O2 $(WARN) -ffp-contract=off
 # lesson=Rasterizer, for each lesson the benchmark times (if it exists).
-BENCH_TABLE   := 02_zbuffer=ZBUFFER 03_perspective_z=PERSPECTIVE_ZBUFFER \
+BENCH_TABLE   := 02_zbuffer=ZBUFFER 03_perspective_z=ZBUFFER \
                  04_scanline_inverse_z=SCANLINE_ZBUFFER
 BENCH_TABLE   := $(filter $(LESSONS:%=%=%),$(BENCH_TABLE))
 BENCH_LESSONS := $(foreach e,$(BENCH_TABLE),$(firstword $(subst =, ,$(e))))

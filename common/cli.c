@@ -446,19 +446,27 @@ static bool check_compare(Parser *p)
 
 /* An output must not replace an input, nor another output: "--obj and --out
  * both name m.obj". Names are compared as given and, for files that exist
- * already, by what they point to (a.png and ./a.png are the same file). */
+ * already, by what they point to (a.png and ./a.png are the same file). The
+ * diff picture --compare writes beside --out counts as an output too. */
 static bool check_paths(Parser *p)
 {
-    enum { FIRST_OUTPUT = 2, PATH_COUNT = 5 };
+    enum { FIRST_OUTPUT = 2, DIFF = 5, PATH_COUNT = 6 };
     const Options *o = p->opt;
+    char diff[PATH_TEXT_MAX];
+    bool has_diff = o->compare && o->out && compare_diff_path(o->out, diff, sizeof diff);
     const char *name[PATH_COUNT] = {"--obj", "--compare", "--out", "--depth-out",
-                                    "--overdraw-out"};
-    const char *path[PATH_COUNT] = {o->obj, o->compare, o->out, o->depth_out, o->overdraw_out};
+                                    "--overdraw-out", "the diff picture of --out"};
+    const char *path[PATH_COUNT] = {o->obj, o->compare, o->out, o->depth_out, o->overdraw_out,
+                                    has_diff ? diff : NULL};
     for (int j = FIRST_OUTPUT; j < PATH_COUNT; j++)
         for (int i = 0; i < j; i++)
             if (path[i] && path[j] &&
-                (strcmp(path[i], path[j]) == 0 || same_file(path[i], path[j])))
+                (strcmp(path[i], path[j]) == 0 || same_file(path[i], path[j]))) {
+                if (j == DIFF)
+                    return error_set(p->err, "%s names %s, where the diff picture of --out goes",
+                                     name[i], path[j]);
                 return error_set(p->err, "%s and %s both name %s", name[i], name[j], path[j]);
+            }
     return true;
 }
 

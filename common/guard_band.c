@@ -1,6 +1,7 @@
 /* guard_band.c: see guard_band.h. */
 #include "guard_band.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -36,10 +37,13 @@ bool guard_band_contains(const ScreenVertex *v, int n, int width, int height)
 }
 
 /* a + (b - a) t, with halved operands so that b - a cannot overflow even for
- * coordinates near the largest double. */
+ * coordinates near the largest double. With b that far and t near 1, the
+ * result itself may pass the largest double: it is held there, a number the
+ * next side can still cut (an infinity would make it NaN). */
 static double lerp_from(double a, double b, double t)
 {
-    return a + ((b / 2 - a / 2) * t) * 2;
+    double p = a + ((b / 2 - a / 2) * t) * 2;
+    return fmax(-DBL_MAX, fmin(DBL_MAX, p));
 }
 
 /* The point where the edge from the inside corner a to the outside corner b
@@ -67,14 +71,21 @@ static ScreenVertex crossing(ScreenVertex a, ScreenVertex b, BandSide s, DepthLi
     return p;
 }
 
-/* Sutherland-Hodgman, one side: keep the inside part of polygon in[0..n-1]. */
+/* Sutherland-Hodgman, one side: keep the inside part of polygon in[0..n-1].
+ * A convex polygon gains at most one corner per side, and out has room for
+ * that only. Returns -1 if this one would gain more: rounding has folded it
+ * (a double cannot place the cut of an edge whose two ends both lie beyond
+ * 2^53 pixels), and no picture of it would be right. */
 static int clip_side(const ScreenVertex *in, int n, BandSide s, DepthLinearity linear,
                      ScreenVertex *out)
 {
-    int m = 0;
+    int m = 0, most = n + 1;
     for (int i = 0; i < n; i++) {
         ScreenVertex a = in[i], b = in[(i + 1) % n];
         bool a_in = inside(a, s), b_in = inside(b, s);
+        int adds = a_in + (a_in != b_in);
+        if (m + adds > most)
+            return -1;
         if (a_in)
             out[m++] = a;
         if (a_in && !b_in)
@@ -114,9 +125,12 @@ int guard_band_clip(const ScreenVertex *in, int n, int width, int height,
     }
     /* Ping-pong between scratch and out so that the last side writes into out. */
     int m = clip_side(in, n, sides[0], linear, scratch);
-    m = clip_side(scratch, m, sides[1], linear, out);
-    m = clip_side(out, m, sides[2], linear, scratch);
-    m = clip_side(scratch, m, sides[3], linear, out);
+    if (m >= 0)
+        m = clip_side(scratch, m, sides[1], linear, out);
+    if (m >= 0)
+        m = clip_side(out, m, sides[2], linear, scratch);
+    if (m >= 0)
+        m = clip_side(scratch, m, sides[3], linear, out);
     if (scratch != small)
         free(scratch);
     return m >= 3 ? m : 0;

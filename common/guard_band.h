@@ -43,7 +43,8 @@ bool guard_band_contains(const ScreenVertex *v, int n, int width, int height);
  * which holds GUARD_BAND_MAX_OUT(n) vertices. Returns the number of vertices
  * of the result: n when it was inside already (out is a copy), 0 when nothing
  * is left (it is far off screen, n < 3, or a corner's x, y or d is not a
- * finite number). */
+ * finite number), and 0 too when rounding folded it into a polygon that is no
+ * longer convex, which only edges with both ends beyond 2^53 pixels can do. */
 int guard_band_clip(const ScreenVertex *in, int n, int width, int height,
                     DepthLinearity linear, ScreenVertex *out);
 

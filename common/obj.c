@@ -393,8 +393,13 @@ static bool read_library(ObjReader *r, const char *lib, Error *err)
     char *text = NULL;
     size_t len = 0;
     Error why;
-    if (stat(path, &st) != 0 && (errno == ENOENT || errno == ENOTDIR))
+    int found = stat(path, &st);
+    if (found != 0 && (errno == ENOENT || errno == ENOTDIR))
         ok = warn_at(r, l, err, "material library '%s' not found", quote(lib).s);
+    else if (found == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode))
+        /* A pipe would wait for a writer forever, /dev/zero never ends. */
+        ok = warn_at(r, l, err, "material library '%s' is not a regular file; ignored",
+                     quote(lib).s);
     else if (!read_file(path, OBJ_MAX_BYTES, &text, &len, &why))
         ok = warn_at(r, l, err, "material library '%s' not read: %s", quote(lib).s, why.msg);
     else

@@ -116,16 +116,23 @@ ScreenFace render_screen_face(const Render *r, int i)
 
 typedef enum { KEEP, BEHIND_NEAR, NOT_FINITE } DropReason;
 
-/* CONVENTIONS.md: lessons 02-04 drop a whole face if any vertex has d <= near. */
+/* docs/conventions.md: lessons 02-04 drop a whole face if any vertex has d <= near. */
 static DropReason drop_reason(const Render *r, const ScreenFace *f)
 {
     for (int k = 0; k < f->n; k++)
         if (!(f->v[k].d > r->camera.near)) /* also catches a d that is NaN */
             return BEHIND_NEAR;
+    if (!screen_face_is_finite(f))
+        return NOT_FINITE;
+    return KEEP;
+}
+
+bool screen_face_is_finite(const ScreenFace *f)
+{
     for (int k = 0; k < f->n; k++)
         if (!isfinite(f->v[k].x) || !isfinite(f->v[k].y) || !isfinite(f->v[k].d))
-            return NOT_FINITE;
-    return KEEP;
+            return false;
+    return true;
 }
 
 bool render_face_dropped(const Render *r, int i)
@@ -174,7 +181,7 @@ float *render_view_depth(const Target *t, const Rasterizer *rz)
         return NULL;
     for (size_t i = 0; i < n; i++) {
         if (t->face[i] == NO_FACE)
-            d[i] = INFINITY; /* CONVENTIONS.md: the background is +infinity */
+            d[i] = INFINITY; /* docs/conventions.md: the background is +infinity */
         else
             d[i] = rz->stored_to_depth ? (float)rz->stored_to_depth(t->depth[i]) : t->depth[i];
     }
@@ -193,7 +200,7 @@ bool render_image(const Render *r, const Target *t, const Rasterizer *rz, ShadeM
     return ok;
 }
 
-/* CONVENTIONS.md: `make run` writes into out/, which may not exist yet. */
+/* docs/conventions.md: `make run` writes into out/, which may not exist yet. */
 static bool make_parent_dirs(const char *path, Error *err)
 {
     const char *slash = strrchr(path, '/');

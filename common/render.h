@@ -9,7 +9,7 @@
  *                   every face corner projected to the screen once
  *   render_faces    hands each face, as a ScreenFace, to the lesson's draw_face,
  *                   in mesh order or in an order the lesson gives; drops a whole
- *                   face when a corner has d <= near (CONVENTIONS.md: clipping
+ *                   face when a corner has d <= near (docs/conventions.md: clipping
  *                   comes in a later lesson) or a screen position that is not
  *                   a finite number, and counts what it drew and dropped
  *   render_write    --out PNG as --shade says (shade.h), --depth-out PFM as
@@ -154,6 +154,12 @@ void render_print_summary(FILE *out, const Render *r, const Target *t, const Ras
  * right and above (along +Z, as OBJ models usually face), far enough that
  * the bounding sphere fits the view; near and far enclose the sphere. */
 SceneInfo render_fit_camera(const Mesh *m, int width, int height);
+
+/* True when every corner of f (x, y and d) is a finite number. A corner that
+ * is NaN or infinite has no place on the screen: render_faces drops such a
+ * face, and a lesson's draw_face refuses one too, rather than trust that its
+ * caller did. */
+bool screen_face_is_finite(const ScreenFace *f);
 
 /* A one-triangle ScreenFace over v[0..2], for tests and tools. */
 ScreenFace screen_triangle(const ScreenVertex v[3], int face);

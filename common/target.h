@@ -57,8 +57,11 @@ void target_trace_pixel(Target *t, int x, int y);
 
 void trace_log_append(TraceLog *log, int face, float value, float stored, bool passed);
 
-/* Called by a lesson's depth test for every fragment it tests at pixel i. */
-static inline void target_record(Target *t, size_t i, int face, float value, float stored,
+/* Called by a lesson's depth test for every fragment it tests at pixel i.
+ * Inline with external linkage (target.c holds its one external definition),
+ * not static, so that a lesson's own inline depth_test may call it: clang
+ * refuses a static function inside an inline function with external linkage. */
+inline void target_record(Target *t, size_t i, int face, float value, float stored,
                                  bool passed)
 {
     t->overdraw[i]++;

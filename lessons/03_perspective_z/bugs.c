@@ -10,6 +10,8 @@
  * sign of every value the depth test sees, and nothing else. */
 static void draw_face_negated_w(Target *t, const ScreenFace *f, const DrawContext *ctx)
 {
+    if (!screen_face_is_finite(f))
+        return; /* as draw_face: a corner that is not a number draws nothing */
     for (int k = 0; k < f->n - 2; k++) {
         ScreenVertex v[3];
         for (int j = 0; j < 3; j++) {

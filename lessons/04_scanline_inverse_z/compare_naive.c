@@ -1,11 +1,36 @@
 /* compare_naive.c: the picture of --compare-naive (see compare_naive.h). */
 #include "compare_naive.h"
 
+#include <string.h>
+
+#include "compare.h"
+#include "file.h"
 #include "scanline.h"
 
-#define AGREED_DIM 2 /* pixels both rules agree on are shown at half brightness */
+#define AGREED_DIM 2       /* pixels both rules agree on are shown at half brightness */
+#define DIFF_PATH_MAX 4096 /* room for the path of the diff picture of --compare */
 
 const Rgb NAIVE_MARK = {255, 0, 255};
+
+static bool same_path(const char *a, const char *b)
+{
+    return a && b && (strcmp(a, b) == 0 || same_file(a, b));
+}
+
+bool compare_naive_path_ok(const Options *opt, const char *path, Error *err)
+{
+    const char *name[] = {"--obj", "--compare", "--out", "--depth-out", "--overdraw-out"};
+    const char *other[] = {opt->obj, opt->compare, opt->out, opt->depth_out, opt->overdraw_out};
+    for (size_t i = 0; i < sizeof name / sizeof name[0]; i++)
+        if (same_path(other[i], path))
+            return error_set(err, "%s and --compare-naive both name %s", name[i], path);
+    char diff[DIFF_PATH_MAX];
+    if (opt->compare && opt->out && compare_diff_path(opt->out, diff, sizeof diff) &&
+        same_path(diff, path))
+        return error_set(err, "--compare-naive names %s, where the diff picture of --out goes",
+                         path);
+    return true;
+}
 
 static bool draw_with(Render *r, const Rasterizer *rz, Target *t, Error *err)
 {

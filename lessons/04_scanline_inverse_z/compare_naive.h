@@ -13,6 +13,11 @@
 
 extern const Rgb NAIVE_MARK; /* magenta */
 
+/* The picture may not replace an input or another output (--obj, --compare,
+ * --out, --depth-out, --overdraw-out, the diff picture of --compare): false
+ * with err set when path names one of them, a usage error. */
+bool compare_naive_path_ok(const Options *opt, const char *path, Error *err);
+
 /* Draws r with both rules, writes the picture to path (colours as opt->shade
  * says) and counts the marked pixels into *differing. r's face counts are
  * left as they were, so that the summary speaks of the main render only.

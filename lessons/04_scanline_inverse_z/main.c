@@ -49,7 +49,8 @@ static bool choose_rasterizer(const Options *opt, const Rasterizer **rz, Error *
         *rz = &SCANLINE_ZBUFFER_NAIVE;
     else if (interp && strcmp(interp, "perspective") != 0)
         return error_set(err, "--depth-interp: '%s' is not one of perspective, naive", interp);
-    return true;
+    const char *compare = opt->extra[FLAG_COMPARE_NAIVE];
+    return !compare || compare_naive_path_ok(opt, compare, err);
 }
 
 /* What a player's step forward would run into: the buffer at the centre pixel. */
