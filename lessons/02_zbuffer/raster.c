@@ -9,7 +9,14 @@
  * A triangle cut at the guard band gets its new corners' d by the same rule. */
 #define DEPTH_LINEARITY LINEAR_D
 
+/* SOLUTION BEGIN: the value the depth buffer is cleared to (the second
+ * field): farther than any fragment, so that the first fragment at a pixel
+ * always passes the test. */
 const Rasterizer ZBUFFER = {"02_zbuffer", INFINITY, draw_face, NULL};
+/* SOLUTION STUB
+const Rasterizer ZBUFFER = {"02_zbuffer", 0.0f, draw_face, NULL};
+*/
+/* SOLUTION END */
 
 /* Rounds a screen position to the nearest 1/256 of a pixel. From here on
  * every coverage decision is made in integers, so it is exact: two triangles
@@ -35,7 +42,17 @@ FixedPoint pixel_centre(int x, int y)
  * seen on the screen, zero on the line through a and b. */
 int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p)
 {
+    /* SOLUTION BEGIN: the edge function E(a, b, p): twice the signed area
+     * of the triangle a, b, p, positive when p lies to the right of a->b on
+     * this y-down screen, zero on the line. */
     return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
+    /* SOLUTION STUB
+    (void)a;
+    (void)b;
+    (void)p;
+    return 0;
+    */
+    /* SOLUTION END */
 }
 
 /* For a triangle walked clockwise on the screen (positive area), the inside
@@ -44,16 +61,34 @@ int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p)
  * inside to its right: it runs up the screen (dy < 0). */
 bool is_top_left(FixedPoint a, FixedPoint b)
 {
+    /* SOLUTION BEGIN: the top-left rule: of a triangle walked clockwise on
+     * the screen, is a->b a top edge (exactly horizontal, the inside below
+     * it) or a left edge (the inside to its right)? */
     int64_t dx = b.x - a.x, dy = b.y - a.y;
     bool top = dy == 0 && dx > 0;
     bool left = dy < 0;
     return top || left;
+    /* SOLUTION STUB
+    (void)a;
+    (void)b;
+    return false;
+    */
+    /* SOLUTION END */
 }
 
 /* Inside an edge: strictly, or exactly on it if it is a top or left edge. */
 bool edge_covers(int64_t e, bool top_left)
 {
+    /* SOLUTION BEGIN: is a pixel centre whose edge function is e inside
+     * this edge? Strictly inside, or exactly on the edge when it is a top
+     * or left edge. */
     return e > 0 || (e == 0 && top_left);
+    /* SOLUTION STUB
+    (void)e;
+    (void)top_left;
+    return false;
+    */
+    /* SOLUTION END */
 }
 
 /* The pixels whose centres can lie in the triangle, clamped to the screen.
@@ -102,11 +137,12 @@ PixelBox bounding_box(FixedPoint a, FixedPoint b, FixedPoint c, int width, int h
 }
 
 /* w_i = E_i / area, where E_i is the edge function of the edge opposite
- * corner i: the share of the triangle's area that lies across from corner i. */
-Barycentric barycentric_weights(int64_t e0, int64_t e1, int64_t e2, int64_t area)
+ * corner i: the share of the triangle's area that lies across from corner i.
+ * inv_area = 1 / area is worked out once per triangle: a multiplication per
+ * weight costs far less than a division. */
+Barycentric barycentric_weights(int64_t e0, int64_t e1, int64_t e2, double inv_area)
 {
-    Barycentric w = {(double)e0 / (double)area, (double)e1 / (double)area,
-                     (double)e2 / (double)area};
+    Barycentric w = {(double)e0 * inv_area, (double)e1 * inv_area, (double)e2 * inv_area};
     return w;
 }
 
@@ -114,14 +150,30 @@ Barycentric barycentric_weights(int64_t e0, int64_t e1, int64_t e2, int64_t area
  * It is not: under perspective 1/d is (lesson 03). */
 double interpolate_depth(Barycentric w, double d0, double d1, double d2)
 {
+    /* SOLUTION BEGIN: the view depth d at the pixel centre, from the
+     * corners' depths and the barycentric weights: this lesson takes d
+     * itself to be linear on the screen. */
     return w.w0 * d0 + w.w1 * d1 + w.w2 * d2;
+    /* SOLUTION STUB
+    (void)w;
+    (void)d0;
+    (void)d1;
+    (void)d2;
+    return 0.0;
+    */
+    /* SOLUTION END */
 }
 
 /* The z-buffer test: the fragment wins when it is nearer than what the pixel
- * holds, d < stored. A tie keeps the face drawn first. */
-bool depth_test(Target *t, size_t i, int face, float d)
+ * holds, d < stored. A tie keeps the face drawn first. inline: draw_triangle
+ * runs it for every fragment, where a call would cost as much as the test. */
+inline bool depth_test(Target *t, size_t i, int face, float d)
 {
     float stored = t->depth[i];
+    /* SOLUTION BEGIN: the z-buffer test: the fragment wins when it is
+     * nearer than what pixel i holds, d < stored (a tie keeps the face
+     * drawn first); report every test with target_record, and keep the
+     * winner's depth and face. */
     bool passed = d < stored;
     target_record(t, i, face, d, stored, passed);
     if (passed) {
@@ -129,6 +181,32 @@ bool depth_test(Target *t, size_t i, int face, float d)
         t->face[i] = face;
     }
     return passed;
+    /* SOLUTION STUB
+    (void)face;
+    (void)d;
+    (void)stored;
+    return false;
+    */
+    /* SOLUTION END */
+}
+
+/* An edge function walked over the bounding box. E(a, b, p) is linear in p:
+ * one pixel to the right adds -(b.y - a.y) * 256 to it, one row down adds
+ * (b.x - a.x) * 256. So each pixel costs an addition per edge instead of two
+ * multiplications, and the sums are exact: the very integers edge_function
+ * gives at each pixel centre. */
+typedef struct {
+    int64_t row_start; /* E at the centre of the box's first pixel on this row */
+    int64_t step_x;    /* added per pixel to the right */
+    int64_t step_y;    /* added per row down */
+    bool top_left;     /* a centre exactly on the edge is inside (edge_covers) */
+} EdgeStepper;
+
+static EdgeStepper edge_stepper(FixedPoint a, FixedPoint b, FixedPoint first_centre)
+{
+    EdgeStepper s = {edge_function(a, b, first_centre), -(b.y - a.y) * SUBPIXEL_ONE,
+                     (b.x - a.x) * SUBPIXEL_ONE, is_top_left(a, b)};
+    return s;
 }
 
 void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, int face,
@@ -145,25 +223,34 @@ void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, in
         ScreenVertex tv = b; b = c; c = tv;
         area = -area;
     }
-    bool top_left0 = is_top_left(p1, p2); /* edge opposite corner 0 */
-    bool top_left1 = is_top_left(p2, p0); /* edge opposite corner 1 */
-    bool top_left2 = is_top_left(p0, p1); /* edge opposite corner 2 */
-
     PixelBox box = bounding_box(p0, p1, p2, t->width, t->height);
-    for (int y = box.y0; y <= box.y1; y++)
-        for (int x = box.x0; x <= box.x1; x++) {
-            FixedPoint p = pixel_centre(x, y);
-            int64_t e0 = edge_function(p1, p2, p);
-            int64_t e1 = edge_function(p2, p0, p);
-            int64_t e2 = edge_function(p0, p1, p);
-            if (!edge_covers(e0, top_left0) || !edge_covers(e1, top_left1) ||
-                !edge_covers(e2, top_left2))
+    FixedPoint first = pixel_centre(box.x0, box.y0);
+    EdgeStepper s0 = edge_stepper(p1, p2, first); /* edge opposite corner 0 */
+    EdgeStepper s1 = edge_stepper(p2, p0, first); /* edge opposite corner 1 */
+    EdgeStepper s2 = edge_stepper(p0, p1, first); /* edge opposite corner 2 */
+    double inv_area = 1.0 / (double)area; /* for barycentric_weights: one division per triangle */
+
+    for (int y = box.y0; y <= box.y1; y++) {
+        int64_t e0 = s0.row_start, e1 = s1.row_start, e2 = s2.row_start;
+        bool entered = false;
+        for (int x = box.x0; x <= box.x1; x++, e0 += s0.step_x, e1 += s1.step_x, e2 += s2.step_x) {
+            bool inside = edge_covers(e0, s0.top_left) && edge_covers(e1, s1.top_left) &&
+                          edge_covers(e2, s2.top_left);
+            if (!inside) {
+                if (entered)
+                    break; /* a triangle is convex: once out of it, the row is done */
                 continue;
-            double d = interpolate_depth(barycentric_weights(e0, e1, e2, area), a.d, b.d, c.d);
+            }
+            entered = true;
+            double d = interpolate_depth(barycentric_weights(e0, e1, e2, inv_area), a.d, b.d, c.d);
             if (d > far)
                 continue; /* beyond the far plane: discarded before any test */
             depth_test(t, (size_t)y * (size_t)t->width + (size_t)x, face, (float)d);
         }
+        s0.row_start += s0.step_y;
+        s1.row_start += s1.step_y;
+        s2.row_start += s2.step_y;
+    }
 }
 
 /* A face is drawn as its triangles. One reaching far off the screen is first
@@ -171,6 +258,8 @@ void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, in
  * it; what is left is a convex polygon, drawn as a fan. */
 void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
 {
+    if (!screen_face_is_finite(f))
+        return; /* a corner that is not a number: no picture is right, so none is drawn */
     for (int k = 0; k < f->n - 2; k++) {
         const Tri *tri = &f->tris[k];
         ScreenVertex corners[3] = {f->v[tri->c[0]], f->v[tri->c[1]], f->v[tri->c[2]]};

@@ -10,7 +10,15 @@
  * same rule. */
 static DepthLinearity depth_linearity(DepthInterp rule)
 {
+    /* SOLUTION BEGIN: what the guard band takes to be linear on the screen
+     * when it cuts a triangle and gives the new corners their depth: the
+     * same quantity as the rule, d for DEPTH_NAIVE, 1/d otherwise. */
     return rule == DEPTH_NAIVE ? LINEAR_D : LINEAR_INV_D;
+    /* SOLUTION STUB
+    (void)rule;
+    return LINEAR_D;
+    */
+    /* SOLUTION END */
 }
 
 const Rasterizer ZBUFFER = {"03_perspective_z", INFINITY, draw_face, NULL};
@@ -107,11 +115,12 @@ PixelBox bounding_box(FixedPoint a, FixedPoint b, FixedPoint c, int width, int h
 }
 
 /* w_i = E_i / area, where E_i is the edge function of the edge opposite
- * corner i: the share of the triangle's area that lies across from corner i. */
-Barycentric barycentric_weights(int64_t e0, int64_t e1, int64_t e2, int64_t area)
+ * corner i: the share of the triangle's area that lies across from corner i.
+ * inv_area = 1 / area is worked out once per triangle: a multiplication per
+ * weight costs far less than a division. */
+Barycentric barycentric_weights(int64_t e0, int64_t e1, int64_t e2, double inv_area)
 {
-    Barycentric w = {(double)e0 / (double)area, (double)e1 / (double)area,
-                     (double)e2 / (double)area};
+    Barycentric w = {(double)e0 * inv_area, (double)e1 * inv_area, (double)e2 * inv_area};
     return w;
 }
 
@@ -120,11 +129,20 @@ Barycentric barycentric_weights(int64_t e0, int64_t e1, int64_t e2, int64_t area
  * function of x / d and y / d, which are affine in the screen position. So
  * blend 1/d with the weights and take the reciprocal:
  *     1/d = w0 / d0 + w1 / d1 + w2 / d2,   d = 1 / (1/d)
+ * The corners' 1/d come in worked out (draw_triangle does it once per
+ * triangle), so a pixel pays one division, not four.
  * Weights 0.5, 0.3, 0.2 on depths 2, 3, 4: 1/d = 0.25 + 0.1 + 0.05 = 0.4, d = 2.5. */
-double interpolate_depth(Barycentric w, double d0, double d1, double d2)
+double interpolate_depth(Barycentric w, double inv_d0, double inv_d1, double inv_d2)
 {
-    double inv_d = w.w0 / d0 + w.w1 / d1 + w.w2 / d2;
+    /* SOLUTION BEGIN: perspective-correct depth: under perspective 1/d, not
+     * d, is linear on the screen. Blend 1/d with the weights, then take its
+     * reciprocal. */
+    double inv_d = w.w0 * inv_d0 + w.w1 * inv_d1 + w.w2 * inv_d2;
     return 1 / inv_d;
+    /* SOLUTION STUB
+    return interpolate_depth_naive(w, 1 / inv_d0, 1 / inv_d1, 1 / inv_d2);
+    */
+    /* SOLUTION END */
 }
 
 /* Lesson 02's naive way, kept for --depth-interp naive: d = w0 d0 + w1 d1 + w2 d2,
@@ -135,8 +153,9 @@ double interpolate_depth_naive(Barycentric w, double d0, double d1, double d2)
 }
 
 /* The z-buffer test: the fragment wins when it is nearer than what the pixel
- * holds, d < stored. A tie keeps the face drawn first. */
-bool depth_test(Target *t, size_t i, int face, float d)
+ * holds, d < stored. A tie keeps the face drawn first. inline: draw_triangle
+ * runs it for every fragment, where a call would cost as much as the test. */
+inline bool depth_test(Target *t, size_t i, int face, float d)
 {
     float stored = t->depth[i];
     bool passed = d < stored;
@@ -146,6 +165,25 @@ bool depth_test(Target *t, size_t i, int face, float d)
         t->face[i] = face;
     }
     return passed;
+}
+
+/* An edge function walked over the bounding box. E(a, b, p) is linear in p:
+ * one pixel to the right adds -(b.y - a.y) * 256 to it, one row down adds
+ * (b.x - a.x) * 256. So each pixel costs an addition per edge instead of two
+ * multiplications, and the sums are exact: the very integers edge_function
+ * gives at each pixel centre. */
+typedef struct {
+    int64_t row_start; /* E at the centre of the box's first pixel on this row */
+    int64_t step_x;    /* added per pixel to the right */
+    int64_t step_y;    /* added per row down */
+    bool top_left;     /* a centre exactly on the edge is inside (edge_covers) */
+} EdgeStepper;
+
+static EdgeStepper edge_stepper(FixedPoint a, FixedPoint b, FixedPoint first_centre)
+{
+    EdgeStepper s = {edge_function(a, b, first_centre), -(b.y - a.y) * SUBPIXEL_ONE,
+                     (b.x - a.x) * SUBPIXEL_ONE, is_top_left(a, b)};
+    return s;
 }
 
 void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, int face,
@@ -162,27 +200,37 @@ void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, in
         ScreenVertex tv = b; b = c; c = tv;
         area = -area;
     }
-    bool top_left0 = is_top_left(p1, p2); /* edge opposite corner 0 */
-    bool top_left1 = is_top_left(p2, p0); /* edge opposite corner 1 */
-    bool top_left2 = is_top_left(p0, p1); /* edge opposite corner 2 */
-
     PixelBox box = bounding_box(p0, p1, p2, t->width, t->height);
-    for (int y = box.y0; y <= box.y1; y++)
-        for (int x = box.x0; x <= box.x1; x++) {
-            FixedPoint p = pixel_centre(x, y);
-            int64_t e0 = edge_function(p1, p2, p);
-            int64_t e1 = edge_function(p2, p0, p);
-            int64_t e2 = edge_function(p0, p1, p);
-            if (!edge_covers(e0, top_left0) || !edge_covers(e1, top_left1) ||
-                !edge_covers(e2, top_left2))
+    FixedPoint first = pixel_centre(box.x0, box.y0);
+    EdgeStepper s0 = edge_stepper(p1, p2, first); /* edge opposite corner 0 */
+    EdgeStepper s1 = edge_stepper(p2, p0, first); /* edge opposite corner 1 */
+    EdgeStepper s2 = edge_stepper(p0, p1, first); /* edge opposite corner 2 */
+    double inv_area = 1.0 / (double)area; /* for barycentric_weights: one division per triangle */
+    double inv_d0 = 1 / a.d, inv_d1 = 1 / b.d, inv_d2 = 1 / c.d; /* once, not per pixel */
+
+    for (int y = box.y0; y <= box.y1; y++) {
+        int64_t e0 = s0.row_start, e1 = s1.row_start, e2 = s2.row_start;
+        bool entered = false;
+        for (int x = box.x0; x <= box.x1; x++, e0 += s0.step_x, e1 += s1.step_x, e2 += s2.step_x) {
+            bool inside = edge_covers(e0, s0.top_left) && edge_covers(e1, s1.top_left) &&
+                          edge_covers(e2, s2.top_left);
+            if (!inside) {
+                if (entered)
+                    break; /* a triangle is convex: once out of it, the row is done */
                 continue;
-            Barycentric w = barycentric_weights(e0, e1, e2, area);
+            }
+            entered = true;
+            Barycentric w = barycentric_weights(e0, e1, e2, inv_area);
             double d = rule == DEPTH_NAIVE ? interpolate_depth_naive(w, a.d, b.d, c.d)
-                                           : interpolate_depth(w, a.d, b.d, c.d);
+                                           : interpolate_depth(w, inv_d0, inv_d1, inv_d2);
             if (d > far)
                 continue; /* beyond the far plane: discarded before any test */
             depth_test(t, (size_t)y * (size_t)t->width + (size_t)x, face, (float)d);
         }
+        s0.row_start += s0.step_y;
+        s1.row_start += s1.step_y;
+        s2.row_start += s2.step_y;
+    }
 }
 
 /* A face is drawn as its triangles. One reaching far off the screen is first
@@ -191,6 +239,8 @@ void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, in
 static void draw_face_by_rule(Target *t, const ScreenFace *f, const DrawContext *ctx,
                               DepthInterp rule)
 {
+    if (!screen_face_is_finite(f))
+        return; /* a corner that is not a number: no picture is right, so none is drawn */
     for (int k = 0; k < f->n - 2; k++) {
         const Tri *tri = &f->tris[k];
         ScreenVertex corners[3] = {f->v[tri->c[0]], f->v[tri->c[1]], f->v[tri->c[2]]};

@@ -46,8 +46,8 @@ int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p);
 bool is_top_left(FixedPoint a, FixedPoint b);
 bool edge_covers(int64_t e, bool top_left);
 PixelBox bounding_box(FixedPoint a, FixedPoint b, FixedPoint c, int width, int height);
-Barycentric barycentric_weights(int64_t e0, int64_t e1, int64_t e2, int64_t area);
-double interpolate_depth(Barycentric w, double d0, double d1, double d2);
+Barycentric barycentric_weights(int64_t e0, int64_t e1, int64_t e2, double inv_area);
+double interpolate_depth(Barycentric w, double inv_d0, double inv_d1, double inv_d2);
 double interpolate_depth_naive(Barycentric w, double d0, double d1, double d2);
 bool depth_test(Target *t, size_t i, int face, float d);
 /* Corners inside the guard band (guard_band.h): draw_face sees to that. */

@@ -13,6 +13,9 @@
 /* A polygon reaching past the guard band is clipped in a buffer on the stack
  * when it has at most this many corners; a bigger one is drawn as its triangles. */
 #define CLIP_MAX_CORNERS 32
+/* draw_polygon snaps a polygon's corners once, into an array on the stack of
+ * this many; a polygon with more corners is drawn as its triangles. */
+#define POLYGON_MAX_CORNERS 256
 
 /* A polygon corner as the rasterizer uses it: snapped, with its 1/d. */
 typedef struct {
@@ -23,9 +26,8 @@ typedef struct {
 /* One side of the polygon: the chain of edges from the top corner to the
  * bottom corner, going round the polygon in direction dir (+1 or -1). */
 typedef struct {
-    const ScreenVertex *v;
+    const Corner *c;
     int n, at, bottom, dir;
-    DepthInterp rule;
 } Chain;
 
 /* Integer division rounding down / up, for any sign of a (b > 0). */
@@ -74,6 +76,10 @@ void clear_depth(Target *t)
 inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 {
     float stored = t->depth[i];
+    /* SOLUTION BEGIN: the reversed test: the buffer holds 1/d, cleared to
+     * 0, so nearer means larger. The fragment wins when inv_d > stored (a
+     * tie keeps the first); report every test with target_record, and keep
+     * the winner's 1/d and face. */
     /* Nearer means larger 1/d: the comparison is reversed because the stored
      * value is reversed. Strict, so that a tie keeps the first fragment. */
     bool passed = inv_d > stored;
@@ -83,11 +89,24 @@ inline bool depth_test(Target *t, size_t i, int face, float inv_d)
         t->face[i] = face;
     }
     return passed;
+    /* SOLUTION STUB
+    (void)face;
+    (void)inv_d;
+    (void)stored;
+    return false;
+    */
+    /* SOLUTION END */
 }
 
 bool edge_setup(Edge *e, int64_t ax, int64_t ay, double inv_a, int64_t bx, int64_t by,
                 double inv_b, int y_first)
 {
+    /* SOLUTION BEGIN: set up the walk down edge a->b, from the first row
+     * whose centre is at or below both a and y_first: where the edge
+     * crosses that row (x_pixel, the first pixel centre at or right of it,
+     * and rem / den, how far right of the edge that centre is), how far it
+     * moves per row (step_pixel, step_rem), where it ends (y_end), and 1/d
+     * there and per row. False when it crosses no row centre. */
     int64_t dx = bx - ax, dy = by - ay;
     if (dy <= 0)
         return false; /* a horizontal edge crosses no row centre */
@@ -117,10 +136,24 @@ bool edge_setup(Edge *e, int64_t ax, int64_t ay, double inv_a, int64_t bx, int64
     e->inv_d_step = (inv_b - inv_a) / dy_pixels;
     e->inv_d = inv_a + ((double)(yc - ay) / S) * e->inv_d_step;
     return true;
+    /* SOLUTION STUB
+    (void)e;
+    (void)ax;
+    (void)ay;
+    (void)inv_a;
+    (void)bx;
+    (void)by;
+    (void)inv_b;
+    (void)y_first;
+    return false;
+    */
+    /* SOLUTION END */
 }
 
 void edge_step(Edge *e)
 {
+    /* SOLUTION BEGIN: one row down the edge: x by step_pixel, and one pixel
+     * more when the remainder runs out; 1/d by its step. */
     e->x_pixel += e->step_pixel;
     e->rem -= e->step_rem;
     if (e->rem < 0) { /* the fraction ran out: the edge moved one pixel more */
@@ -128,11 +161,20 @@ void edge_step(Edge *e)
         e->x_pixel++;
     }
     e->inv_d += e->inv_d_step;
+    /* SOLUTION STUB
+    (void)e;
+    */
+    /* SOLUTION END */
 }
 
 void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, double inv_far,
                DepthInterp rule)
 {
+    /* SOLUTION BEGIN: fill row y from the left edge to the right edge,
+     * clipped to the screen: 1/d at the first pixel centre, then one
+     * addition per pixel; discard a fragment beyond the far plane (1/d <
+     * inv_far), test the others. Under DEPTH_NAIVE the value stepped is d,
+     * and the test still wants 1/d. */
     int64_t x_first = left->x_pixel < 0 ? 0 : left->x_pixel;
     int64_t x_stop = right->x_pixel > t->width ? t->width : right->x_pixel;
     if (x_first >= x_stop)
@@ -155,6 +197,16 @@ void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, 
             depth_test(t, i, face, (float)fragment);
         inv_d += step; /* one addition per pixel */
     }
+    /* SOLUTION STUB
+    (void)t;
+    (void)y;
+    (void)left;
+    (void)right;
+    (void)face;
+    (void)inv_far;
+    (void)rule;
+    */
+    /* SOLUTION END */
 }
 
 /* Sets up the next edge of the chain that crosses rows at or after y. */
@@ -162,7 +214,7 @@ static bool chain_next_edge(Chain *c, int y, Edge *e)
 {
     while (c->at != c->bottom) {
         int next = (c->at + c->dir + c->n) % c->n;
-        Corner a = corner(&c->v[c->at], c->rule), b = corner(&c->v[next], c->rule);
+        Corner a = c->c[c->at], b = c->c[next];
         c->at = next;
         if (edge_setup(e, a.x, a.y, a.inv_d, b.x, b.y, b.inv_d, y))
             return true;
@@ -201,13 +253,13 @@ static bool corner_in_range(const ScreenVertex *v)
  * and y changes direction at most twice going round, so the polygon is one
  * loop with one left side and one right side. *turn gets the sign of the
  * turns: > 0 when the polygon goes clockwise on the screen (y down). */
-static bool convex_on_screen(const ScreenVertex *v, int n, int *turn)
+static bool convex_on_screen(const Corner *c, int n, int *turn)
 {
     int sign = 0, y_turns = 0, last_dy = 0;
     for (int i = 0; i < n; i++) {
-        const ScreenVertex *a = &v[i], *b = &v[(i + 1) % n], *c = &v[(i + 2) % n];
-        int64_t abx = snap(b->x) - snap(a->x), aby = snap(b->y) - snap(a->y);
-        int64_t bcx = snap(c->x) - snap(b->x), bcy = snap(c->y) - snap(b->y);
+        const Corner *a = &c[i], *b = &c[(i + 1) % n], *next = &c[(i + 2) % n];
+        int64_t abx = b->x - a->x, aby = b->y - a->y;
+        int64_t bcx = next->x - b->x, bcy = next->y - b->y;
         int64_t cross = abx * bcy - aby * bcx;
         int s = (cross > 0) - (cross < 0);
         if (s != 0 && sign != 0 && s != sign)
@@ -222,7 +274,7 @@ static bool convex_on_screen(const ScreenVertex *v, int n, int *turn)
     }
     /* Close the loop: the direction of the first edge that moves in y. */
     for (int i = 0; i < n; i++) {
-        int64_t aby = snap(v[(i + 1) % n].y) - snap(v[i].y);
+        int64_t aby = c[(i + 1) % n].y - c[i].y;
         int dy = (aby > 0) - (aby < 0);
         if (dy != 0) {
             if (last_dy != 0 && dy != last_dy)
@@ -239,29 +291,34 @@ bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far,
 {
     if (n < 3)
         return true; /* nothing to draw */
-    for (int i = 0; i < n; i++)
+    if (n > POLYGON_MAX_CORNERS)
+        return false;
+    Corner c[POLYGON_MAX_CORNERS];
+    for (int i = 0; i < n; i++) {
         if (!corner_in_range(&v[i]))
             return false;
+        c[i] = corner(&v[i], rule); /* snapped once: everything below works on c */
+    }
     int turn;
-    if (!convex_on_screen(v, n, &turn))
+    if (!convex_on_screen(c, n, &turn))
         return false;
 
     int top = 0, bottom = 0;
     for (int i = 1; i < n; i++) {
-        if (snap(v[i].y) < snap(v[top].y))
+        if (c[i].y < c[top].y)
             top = i;
-        if (snap(v[i].y) > snap(v[bottom].y))
+        if (c[i].y > c[bottom].y)
             bottom = i;
     }
     /* Going forward from the top corner of a clockwise polygon (on a y-down
      * screen) runs down its right side; going backward runs down its left. */
-    Chain forward = {v, n, top, bottom, +1, rule}, backward = {v, n, top, bottom, -1, rule};
+    Chain forward = {c, n, top, bottom, +1}, backward = {c, n, top, bottom, -1};
     Chain *left = turn > 0 ? &backward : &forward;
     Chain *right = turn > 0 ? &forward : &backward;
 
     /* Only rows on the screen are walked, whatever the polygon's size. */
-    int64_t y_first = first_row_at_or_below(snap(v[top].y));
-    int64_t y_stop = first_row_at_or_below(snap(v[bottom].y));
+    int64_t y_first = first_row_at_or_below(c[top].y);
+    int64_t y_stop = first_row_at_or_below(c[bottom].y);
     if (y_first < 0)
         y_first = 0;
     if (y_stop > t->height)

@@ -90,7 +90,8 @@ void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, 
 /* A convex polygon of n >= 3 screen vertices (either winding), drawn whole.
  * Returns false, drawing nothing, when the polygon is not convex on screen
  * (or has a vertex that is not finite, not in front, or beyond
- * SCANLINE_MAX_COORD): the caller draws its triangles instead. A polygon of
+ * SCANLINE_MAX_COORD, or more than 256 corners to snap at once): the caller
+ * draws its triangles instead. A polygon of
  * zero area is convex and draws nothing. */
 bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far,
                   DepthInterp rule);

@@ -1,8 +1,8 @@
 /* test_depth.c: what lesson 03 teaches, checked in-process: 1/d is blended
- * with the barycentric weights and inverted (the seed's worked example, chosen
- * pixels, the true depth of triangles3's surfaces), the naive rule is still
- * lesson 02's, the guard band follows each rule, and --bug negated-w lets
- * the farthest surface win. */
+ * with the barycentric weights and inverted (the worked example of a z-buffer
+ * chapter of a Lua rasterizer tutorial, chosen pixels, the true depth of
+ * triangles3's surfaces), the naive rule is still lesson 02's, the guard band
+ * follows each rule, and --bug negated-w lets the farthest surface win. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -57,15 +57,18 @@ static void expect_relative(double got, double want, double tolerance, const cha
 
 /* ---- The rule itself ----------------------------------------------------------- */
 
-/* The seed's worked example: corners at depths 2, 3 and 4, weights 0.5, 0.3
- * and 0.2. Blending 1/d: 0.5/2 + 0.3/3 + 0.2/4 = 0.25 + 0.1 + 0.05 = 0.4, so
- * d = 1/0.4 = 2.5. Blending d itself: 1 + 0.9 + 0.8 = 2.7, farther than the
- * surface really is there. */
+/* The worked example of a z-buffer chapter of a Lua rasterizer tutorial:
+ * corners at depths 2, 3 and 4, weights 0.5, 0.3 and 0.2. Blending 1/d:
+ * 0.5/2 + 0.3/3 + 0.2/4 = 0.25 + 0.1 + 0.05 = 0.4, so d = 1/0.4 = 2.5.
+ * Blending d itself: 1 + 0.9 + 0.8 = 2.7, farther than the surface really is
+ * there. (interpolate_depth takes the corners' 1/d, as
+ * draw_triangle works them out once per triangle.) */
 static void worked_example_gives_2_5_and_naive_gives_2_7(void **state)
 {
     (void)state;
     Barycentric w = {0.5, 0.3, 0.2};
-    double right = interpolate_depth(w, 2, 3, 4), naive = interpolate_depth_naive(w, 2, 3, 4);
+    double right = interpolate_depth(w, 1.0 / 2, 1.0 / 3, 1.0 / 4);
+    double naive = interpolate_depth_naive(w, 2, 3, 4);
     if (fabs(right - 2.5) > 1e-12)
         fail_msg("interpolate_depth gave %.17g, the worked example says 2.5", right);
     if (fabs(naive - 2.7) > 1e-12)
@@ -77,7 +80,7 @@ static void both_rules_give_the_corner_depth_at_a_corner(void **state)
 {
     (void)state;
     Barycentric at_corner1 = {0, 1, 0};
-    assert_true(interpolate_depth(at_corner1, 2, 7, 4) == 7);
+    assert_true(interpolate_depth(at_corner1, 1.0 / 2, 1.0 / 7, 1.0 / 4) == 7);
     assert_true(interpolate_depth_naive(at_corner1, 2, 7, 4) == 7);
 }
 

@@ -62,7 +62,7 @@ static const Budget BUDGETS[] = {
     {"03", "04", "compare_naive.c", 44},
     {"03", "04", "compare_naive.h", 28},
     {"03", "04", "main.c", 127},
-    {"03", "04", "raster.c", 235},
+    {"03", "04", "raster.c", 270}, /* 246 since the edge functions are stepped (make bench) */
     {"03", "04", "raster.h", 75},
     {"03", "04", "scanline.c", 385},
     {"03", "04", "scanline.h", 125},

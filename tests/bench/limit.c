@@ -1,0 +1,189 @@
+/* limit.c: the fastest a rasterizer of this series could draw.
+ *
+ *     bench_limit [--reps N]
+ *
+ * The limit: the fill_back_to_front workload with every piece of coverage
+ * work taken away. FILL_LAYERS layers, nearest last, each one a plain walk
+ * over the rows of the same 1024x1024 Target, and at every pixel the depth
+ * test every lesson must do: compare with the stored value, report the
+ * fragment with target_record (target.h: every tested fragment is counted),
+ * write depth and face when it passes. No edge, no interpolation, no setup:
+ * what remains is the memory traffic and the bookkeeping of one fragment.
+ * Every row of the benchmark's table is compared with it.
+ *
+ * Then the same for the small workload: for each of its triangles, the same
+ * depth tests on a staircase of pixels in the rows and columns of the
+ * triangle's square (1 + 2 + ... + 10 = 55 pixels where the lessons cover
+ * about 50), with no coverage work. It shows what small's scattered memory
+ * accesses cost by themselves. And once more without target_record: depth
+ * and face are tested and written, nothing is counted, so overdraw[] is
+ * never touched. The difference is what the bookkeeping costs.
+ *
+ * Prints three CSV lines (measure.h), lesson "limit", workloads
+ * "fill_back_to_front", "small" and "small_uncounted". */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "measure.h"
+#include "target.h"
+#include "workloads.h"
+
+#define LIMIT_SIDE 1024
+/* Pixels of one staircase: 1 + 2 + ... + SMALL_LEG. */
+#define SMALL_STAIR_PIXELS ((int)SMALL_LEG * ((int)SMALL_LEG + 1) / 2)
+#define MAX_REPS 100
+
+/* The z-buffer test of lessons 02 and 03, d < stored (lesson 04's 1/d > stored
+ * costs the same), on pixels x0 .. x1 - 1 of row y, each fragment reported
+ * with target_record as the lessons report it. */
+static void depth_test_run(Target *t, int y, int x0, int x1, float d, int face)
+{
+    size_t i = (size_t)y * (size_t)t->width + (size_t)x0;
+    for (int x = x0; x < x1; x++, i++) {
+        float stored = t->depth[i];
+        bool passed = d < stored;
+        target_record(t, i, face, d, stored, passed);
+        if (passed) {
+            t->depth[i] = d;
+            t->face[i] = face;
+        }
+    }
+}
+
+/* The same test and writes, with nothing counted. */
+static void depth_test_run_uncounted(Target *t, int y, int x0, int x1, float d, int face)
+{
+    size_t i = (size_t)y * (size_t)t->width + (size_t)x0;
+    for (int x = x0; x < x1; x++, i++) {
+        if (d < t->depth[i]) {
+            t->depth[i] = d;
+            t->face[i] = face;
+        }
+    }
+}
+
+/* The layers of fill_back_to_front, farthest first: d from WORKLOAD_D_MAX
+ * down to WORKLOAD_D_MIN, as workloads.c spaces them. */
+static void fill_layers(Target *t)
+{
+    for (int j = 0; j < FILL_LAYERS; j++) {
+        double step = (WORKLOAD_D_MAX - WORKLOAD_D_MIN) * j / (FILL_LAYERS - 1);
+        float d = (float)(WORKLOAD_D_MAX - step);
+        for (int y = 0; y < t->height; y++)
+            depth_test_run(t, y, 0, t->width, d, 2 * j);
+    }
+}
+
+/* small's triangles, each as a staircase in its square: row k of the square
+ * gets k + 1 pixels, at the triangle's first corner's depth. */
+static void staircases(Target *t, const Workload *w, bool counted)
+{
+    int leg = (int)SMALL_LEG; /* staircase rows */
+    for (int f = 0; f < w->nfaces; f++) {
+        const ScreenVertex *v = w->faces[f].v;
+        int x0 = (int)fmin(v[0].x, fmin(v[1].x, v[2].x));
+        int y0 = (int)fmin(v[0].y, fmin(v[1].y, v[2].y));
+        if (x0 + leg > t->width)
+            x0 = t->width - leg;
+        if (y0 + leg > t->height)
+            y0 = t->height - leg;
+        for (int k = 0; k < leg; k++)
+            if (counted)
+                depth_test_run(t, y0 + k, x0, x0 + k + 1, (float)v[0].d, f);
+            else
+                depth_test_run_uncounted(t, y0 + k, x0, x0 + k + 1, (float)v[0].d, f);
+    }
+}
+
+static void small_staircases(Target *t, const Workload *w)
+{
+    staircases(t, w, true);
+}
+
+static void small_staircases_uncounted(Target *t, const Workload *w)
+{
+    staircases(t, w, false);
+}
+
+typedef void (*DrawFn)(Target *t, const Workload *w);
+
+static void draw_fill(Target *t, const Workload *w)
+{
+    (void)w;
+    fill_layers(t);
+}
+
+/* Draws reps times after the warm-up into a fresh LIMIT_SIDE target.
+ * fragments: how many depth tests one drawing makes, worked out by the caller
+ * (an uncounted drawing cannot tell); a counted one must agree. */
+static bool measure(DrawFn draw, const Workload *w, const char *workload, long triangles,
+                    uint64_t fragments, int reps, Measurement *m, Error *err)
+{
+    Target t;
+    if (!target_init(&t, LIMIT_SIDE, LIMIT_SIDE, INFINITY, err))
+        return false;
+    double times[MAX_REPS];
+    for (int k = -BENCH_WARMUP; k < reps; k++) {
+        target_reset(&t, INFINITY);
+        double start = now_seconds();
+        draw(&t, w);
+        double elapsed = now_seconds() - start;
+        if (k >= 0)
+            times[k] = elapsed;
+    }
+    uint64_t counted = t.stats.tested;
+    Measurement r = {"limit", workload, LIMIT_SIDE, LIMIT_SIDE, reps, triangles,
+                     fragments, 0, 0, 0, depth_checksum(&t)};
+    summarise_times(times, reps, &r.median_s, &r.min_s, &r.max_s);
+    *m = r;
+    target_free(&t);
+    if (counted != 0 && counted != fragments)
+        return error_set(err, "limit %s: %llu fragments counted, %llu expected", workload,
+                         (unsigned long long)counted, (unsigned long long)fragments);
+    return true;
+}
+
+int main(int argc, char **argv)
+{
+    const char *program = argc > 0 ? argv[0] : "bench_limit";
+    int reps = BENCH_REPS;
+    if (argc == 3 && strcmp(argv[1], "--reps") == 0) {
+        char *end;
+        long n = strtol(argv[2], &end, 10);
+        if (*end != '\0' || n < 1 || n > MAX_REPS) {
+            fprintf(stderr, "%s: error: --reps needs a number from 1 to %d\n", program, MAX_REPS);
+            return 2;
+        }
+        reps = (int)n;
+    } else if (argc != 1) {
+        fprintf(stderr, "%s: error: unexpected '%s' (usage: %s [--reps N])\n", program, argv[1],
+                program);
+        return 2;
+    }
+
+    Workload small;
+    Measurement fill, stairs, bare;
+    Error err;
+    bool ok = workload_build(&small, WORKLOAD_SMALL, &err);
+    if (ok) {
+        uint64_t fill_fragments = (uint64_t)FILL_LAYERS * LIMIT_SIDE * LIMIT_SIDE;
+        uint64_t stair_fragments = (uint64_t)small.nfaces * SMALL_STAIR_PIXELS;
+        ok = measure(draw_fill, NULL, workload_name(WORKLOAD_FILL_BACK_TO_FRONT), 0,
+                     fill_fragments, reps, &fill, &err) &&
+             measure(small_staircases, &small, small.name, small.ntris, stair_fragments, reps,
+                     &stairs, &err) &&
+             measure(small_staircases_uncounted, &small, "small_uncounted", small.ntris,
+                     stair_fragments, reps, &bare, &err);
+        workload_free(&small);
+    }
+    if (!ok) {
+        fprintf(stderr, "%s: error: %s\n", program, err.msg);
+        return 1;
+    }
+    measure_print(stdout, &fill);
+    measure_print(stdout, &stairs);
+    measure_print(stdout, &bare);
+    return 0;
+}

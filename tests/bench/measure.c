@@ -1,0 +1,46 @@
+/* measure.c: see measure.h. */
+#include "measure.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+void target_reset(Target *t, float clear)
+{
+    size_t n = (size_t)t->width * (size_t)t->height;
+    for (size_t i = 0; i < n; i++) {
+        t->depth[i] = clear;
+        t->face[i] = NO_FACE;
+    }
+    memset(t->overdraw, 0, n * sizeof *t->overdraw);
+    FragmentStats none = {0};
+    t->stats = none;
+}
+
+static int compare_doubles(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+void summarise_times(double *times, int n, double *median, double *min, double *max)
+{
+    qsort(times, (size_t)n, sizeof *times, compare_doubles);
+    *min = times[0];
+    *max = times[n - 1];
+    *median = n % 2 ? times[n / 2] : (times[n / 2 - 1] + times[n / 2]) / 2;
+}
+
+void measure_print(FILE *out, const Measurement *m)
+{
+    fprintf(out, "%s,%s,%d,%d,%d,%ld,%llu,%.6f,%.6f,%.6f,%016llx\n", m->lesson, m->workload,
+            m->width, m->height, m->reps, m->triangles, (unsigned long long)m->fragments,
+            m->median_s, m->min_s, m->max_s, (unsigned long long)m->checksum);
+}

@@ -1,0 +1,47 @@
+/* measure.h: timing a piece of drawing several times, and one line of results.
+ *
+ * A run is BENCH_WARMUP untimed repetitions (caches, page faults, CPU clock
+ * settling), then BENCH_REPS timed ones. Before each repetition the target
+ * is cleared, untimed: only drawing is measured. The result is the median
+ * time and the spread (fastest and slowest repetition).
+ *
+ * Each bench binary prints one CSV line per workload (measure_print), the
+ * columns of MEASURE_CSV_HEADER; tests/bench/run-bench.sh turns the lines of
+ * every binary into the table. */
+#ifndef MEASURE_H
+#define MEASURE_H
+
+#include <stdint.h>
+#include <stdio.h>
+
+#include "target.h"
+
+#define BENCH_WARMUP 1
+#define BENCH_REPS 11
+
+#define MEASURE_CSV_HEADER \
+    "lesson,workload,width,height,reps,triangles,fragments,median_s,min_s,max_s,checksum"
+
+typedef struct {
+    const char *lesson, *workload;
+    int width, height;
+    int reps;
+    long triangles;       /* drawn per repetition */
+    uint64_t fragments;   /* tested per repetition (Target.stats.tested) */
+    double median_s, min_s, max_s;
+    uint64_t checksum;    /* of the depth buffer after one repetition */
+} Measurement;
+
+/* Seconds of CPU time this thread has used. Not the wall clock: on a busy
+ * machine the time other programs get would count as ours. */
+double now_seconds(void);
+
+/* Back to the state target_init leaves: depth = clear, no face, no counts. */
+void target_reset(Target *t, float clear);
+
+/* Median, minimum and maximum of times[0 .. n-1] (n >= 1; sorts times). */
+void summarise_times(double *times, int n, double *median, double *min, double *max);
+
+void measure_print(FILE *out, const Measurement *m);
+
+#endif
