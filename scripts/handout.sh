@@ -1,0 +1,213 @@
+#!/bin/sh
+# handout.sh: the student's copy of the series, with one lesson to write.
+#
+#   sh scripts/handout.sh [--only] [--dest DIR] [--build DIR] LESSON
+#   (make handout LESSON=03 [DEST=dir] [ONLY=1] calls it)
+#
+# Writes a tree that builds and tests on its own: common/, scripts/, tools/,
+# the Makefile, the README, the lesson pages and the tests, and the lesson
+# with each solution region (scripts/solution-regions.awk says what that is)
+# replaced by a TODO(student): comment and its stub. The other lessons come
+# as they are, or, with --only, are left out with their tests and pages.
+# Left out always: the teacher's own checks of these tools (tests/tools/); the
+# benchmark's limit (tests/bench/limit.c times a copy of the depth test, so
+# make bench does not work in a handout: it times the finished lessons); the
+# diffs that show this lesson's code (docs/diffs/*NN*); and the CI script (it
+# would fail: the handout's tests fail until the work is done).
+#
+# Before the tree is put in place, it is searched for every line that only
+# the solution has; one found there fails the handout, and nothing is written.
+#
+# DEST defaults to BUILD/handout/<lesson>. An existing DEST is replaced only
+# if it is empty or an earlier handout (it holds the file .handout).
+# Exit status: 0 done, 1 failed (no regions, malformed marker, a solution line
+# in the handout, a copy failed), 2 usage error.
+set -eu
+
+prog=handout
+usage() {
+    echo "$prog: error: $1" >&2
+    echo "usage: make handout LESSON=NN [DEST=dir] [ONLY=1]" >&2
+    exit 2
+}
+die() {
+    echo "$prog: error: $1" >&2
+    [ -n "${tmp:-}" ] && rm -rf "$tmp"
+    exit 1
+}
+
+only=0
+dest=""
+build=build
+lesson=""
+while [ $# -gt 0 ]; do
+    case $1 in
+        --only) only=1 ;;
+        --dest) [ $# -ge 2 ] || usage "--dest wants a directory"; dest=$2; shift ;;
+        --build) [ $# -ge 2 ] || usage "--build wants a directory"; build=$2; shift ;;
+        -*) usage "unknown option $1" ;;
+        *) [ -z "$lesson" ] || usage "one lesson at a time (got $lesson and $1)"; lesson=$1 ;;
+    esac
+    shift
+done
+[ -n "$lesson" ] || usage "which lesson? e.g. LESSON=03"
+[ -f Makefile ] && [ -d lessons ] && [ -d common ] ||
+    usage "run it from the top of the series (where the Makefile is)"
+
+# LESSON=03 or LESSON=03_perspective_z: exactly one lesson directory.
+name=""
+for d in lessons/"$lesson"*; do
+    [ -d "$d" ] || continue
+    [ -z "$name" ] || usage "LESSON=$lesson matches more than one lesson"
+    name=${d#lessons/}
+done
+[ -n "$name" ] || usage "no lesson LESSON=$lesson in lessons/ (they are: $(ls lessons | tr '\n' ' '))"
+number=$(echo "$name" | cut -c1-2)
+awk_regions=scripts/solution-regions.awk
+
+# The files of the lesson that hold regions, and its page if it has any.
+marked=""
+for f in lessons/"$name"/* docs/"$name".md; do
+    [ -f "$f" ] || continue
+    if grep -Eq 'SOLUTION (BEGIN|STUB|END)' "$f"; then marked="$marked $f"; fi
+done
+case $marked in
+    *lessons/*) ;;
+    *) die "lessons/$name has no SOLUTION BEGIN marker: nothing to take out (is this already a handout?)" ;;
+esac
+# shellcheck disable=SC2086 # the list is of plain relative paths
+awk -v mode=regions -f "$awk_regions" $marked >/dev/null ||
+    die "the solution markers above are malformed; nothing was written"
+
+[ -n "$dest" ] || dest="$build/handout/$name"
+case $dest in
+    */) dest=${dest%/} ;;
+esac
+if [ -e "$dest" ]; then
+    [ -d "$dest" ] || usage "DEST=$dest exists and is not a directory"
+    if [ ! -f "$dest/.handout" ] && [ -n "$(ls -A "$dest")" ]; then
+        usage "DEST=$dest exists and is not an earlier handout: remove it or pick another DEST"
+    fi
+fi
+
+# Built beside DEST, moved into place only when it is complete and checked.
+parent=$(dirname "$dest")
+mkdir -p "$parent" || die "cannot create $parent"
+tmp="$dest.tmp.$$"
+rm -rf "$tmp"
+mkdir "$tmp" || die "cannot create $tmp"
+trap 'rm -rf "$tmp"' INT TERM HUP
+
+# copy PATH: PATH (file or directory) into the same place in the handout.
+copy() {
+    mkdir -p "$tmp/$(dirname "$1")" && cp -R "$1" "$tmp/$1" || die "cannot copy $1"
+}
+
+for f in Makefile README.md .gitignore common scripts tools tests docs lessons; do
+    if [ -e "$f" ]; then copy "$f"; fi
+done
+rm -rf "$tmp/tests/tools" "$tmp/tests/bench/limit.c"
+# The diffs between lessons (docs/diffs/02_to_03.diff) show this lesson's code.
+if [ -d "$tmp/docs/diffs" ]; then
+    find "$tmp/docs/diffs" -name "*${number}[_.]*" -exec rm -f {} + || die "cannot leave out docs/diffs"
+fi
+for f in lessons/"$name"/*; do
+    case " $marked " in
+        *" $f "*) awk -v mode=strip -f "$awk_regions" "$f" >"$tmp/$f" ||
+                      die "cannot write the handout of $f" ;;
+    esac
+done
+case " $marked " in
+    *" docs/$name.md "*)
+        awk -v mode=strip -f "$awk_regions" "docs/$name.md" >"$tmp/docs/$name.md" ||
+            die "cannot write the handout of docs/$name.md" ;;
+esac
+
+# --only: out go the other lessons, with everything named after them: their
+# tests, expected images, pages, pictures (docs/images/02_*), fuzz targets.
+# A lesson whose program this lesson's tests run (lesson 03's compare their
+# naive rule with lesson 02's pictures) stays, as it is, without its tests.
+needed=""
+if [ "$only" -eq 1 ]; then
+    for d in lessons/*; do
+        [ -d "$d" ] || continue
+        other=${d#lessons/}
+        [ "$other" = "$name" ] && continue
+        if grep -q "\"$other\"" tests/"$name"/* 2>/dev/null; then
+            needed="$needed $other"
+        else
+            rm -rf "${tmp:?}/$d"
+        fi
+        for top in "$tmp/tests" "$tmp/docs"; do
+            [ -d "$top" ] || continue
+            find "$top" \( -name "*$other*" -o -name "$(echo "$other" | cut -c1-2)_*" \) \
+                -prune -exec rm -rf {} + || die "cannot leave out $other"
+        done
+    done
+fi
+
+# The check: no line that only the solution has is anywhere in the handout
+# but in other lessons (and their pages), which the teacher chose to include
+# as they are. Lines are compared as solution-regions.awk prints them:
+# trimmed, without their trailing comment and final ";".
+lines="$tmp.lines"
+# All of the lesson is read: a line it has outside the regions gives nothing away.
+sources=$(ls lessons/"$name"/* | tr '\n' ' ')
+case " $marked " in
+    *" docs/$name.md "*) sources="$sources docs/$name.md" ;;
+esac
+# shellcheck disable=SC2086
+awk -v mode=lines -f "$awk_regions" $sources >"$lines" || die "cannot list the solution lines"
+files="$tmp.files"
+(cd "$tmp" && find . -type f ! -name '*.png' ! -name '*.pfm' ! -name '*.pgm') |
+    sed 's|^\./||' | while read -r f; do
+        case $f in
+            lessons/"$name"/*|docs/"$name".md) echo "$f" ;;
+            lessons/*/*|docs/[0-9][0-9]_*) ;;
+            *) echo "$f" ;;
+        esac
+    done >"$files"
+leaks=$(awk -v lines="$lines" -v files="$files" -v root="$tmp" '
+    function trim(s) { sub(/^[ \t\r]+/, "", s); sub(/[ \t\r]+$/, "", s); return s }
+    function code_of(s,    i) {
+        s = trim(s)
+        i = index(s, "/*"); if (i > 1) s = substr(s, 1, i - 1)
+        i = index(s, "//"); if (i > 1) s = substr(s, 1, i - 1)
+        s = trim(s); sub(/;$/, "", s)
+        return s
+    }
+    BEGIN {
+        while ((getline l < lines) > 0) {
+            tab = index(l, "\t")
+            where[substr(l, tab + 1)] = substr(l, 1, tab - 1)
+        }
+        while ((getline f < files) > 0) {
+            n = 0
+            while ((getline l < (root "/" f)) > 0) {
+                n++
+                c = code_of(l)
+                if (c in where) printf "  %s:%d has %s (%s)\n", f, n, where[c], c
+            }
+            close(root "/" f)
+        }
+    }')
+rm -f "$files"
+rm -f "$lines"
+[ -z "$leaks" ] || die "a line of a solution region is in the handout:
+$leaks
+Widen the region, or change the line outside it; nothing was written."
+
+echo "handout of lessons/$name, made by make handout" >"$tmp/.handout"
+rm -rf "$dest"
+mv "$tmp" "$dest" || die "cannot move the handout to $dest"
+tmp=""
+
+todos=$(cd "$dest" && grep -n 'TODO(student):' "lessons/$name"/* "docs/$name.md" 2>/dev/null || true)
+count=$(echo "$todos" | grep -c . || true)
+echo "$prog: wrote $dest: lessons/$name with $count solution region(s) taken out$(
+    [ "$only" -eq 1 ] && echo ", no other lesson")"
+echo "$todos" | sed 's/^/  /'
+if [ -n "$needed" ]; then
+    echo "$prog: kept, as they are, the lessons whose programs its tests run:$needed"
+fi
+echo "$prog: the student runs: make test LESSON=$number   (and make grade LESSON=$number for the score)"

@@ -1,0 +1,28 @@
+/* shell.h: run a shell command line from a test, as a user would type it.
+ *
+ * For the tests of the classroom tools (make handout, make grade), which run
+ * make and scripts in other directories. run_program (test_support.h) runs
+ * the series' own executables; this runs `sh -c COMMAND`.
+ *
+ * The command runs in directory dir (NULL: the current one), with stdin from
+ * /dev/null and stdout and stderr together in one text, without what an
+ * enclosing make passes down (MAKEFLAGS, MAKELEVEL, MFLAGS, and the series'
+ * variables of its command line: BUILD, OPT, LESSON, ...): a make in the
+ * command starts afresh. After timeout_seconds it is killed with everything
+ * it started: status 124. */
+#ifndef SHELL_H
+#define SHELL_H
+
+typedef struct {
+    int status;   /* exit status, 128 + N if signal N killed it, 124 on timeout */
+    char *output; /* stdout and stderr, in the order they were written */
+} ShellResult;
+
+ShellResult run_shell(const char *dir, int timeout_seconds, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+void shell_result_free(ShellResult *r);
+
+#endif

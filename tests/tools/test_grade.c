@@ -1,0 +1,457 @@
+/* test_grade.c: make grade and make handout, on a made-up lesson whose tests
+ * do every bad thing student code can do: fail, crash in a way cmocka
+ * catches, abort the whole test program, hang. Each must cost exactly the
+ * points of its own test; results.json must be JSON (read back with a real
+ * parser) in the Gradescope format; the handout tool must refuse to write a
+ * tree that gives a solution line away.
+ *
+ * The made-up lesson lives in a copy of the series' build machinery under
+ * $TEST_OUTPUT/tmp/grade_tree, built once (at -O0, it is small). */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "file.h"
+#include "json.h"
+#include "shell.h"
+#include "test_support.h"
+
+#define SHELL_TIMEOUT 120 /* seconds: a build and a grade, with room to spare */
+#define MAX_FILE (1 << 22)
+
+static char tree[4096]; /* the made-up series, set up once: an absolute path */
+
+static const char FAKE_H[] = "int fake_add(int a, int b);\n";
+
+/* The lesson's one idea: adding. Its region has a stub that compiles. */
+static const char FAKE_C[] =
+    "#include \"fake.h\"\n"
+    "\n"
+    "/* The sum of a and b. */\n"
+    "int fake_add(int a, int b)\n"
+    "{\n"
+    "    /* SOLUTION BEGIN: return the sum of a and b */\n"
+    "    int sum = a + b;\n"
+    "    return sum;\n"
+    "    /* SOLUTION STUB\n"
+    "    (void)a; (void)b;\n"
+    "    return 0;\n"
+    "    */\n"
+    "    /* SOLUTION END */\n"
+    "}\n";
+
+static const char MAIN_C[] = "#include \"fake.h\"\nint main(void) { return fake_add(0, 0); }\n";
+
+/* The tests, in the order cmocka runs them. The abort kills the whole test
+ * program, so make grade must run the three tests after it on their own. */
+static const char TEST_FAKE_C[] =
+    "#include <setjmp.h>\n#include <stdarg.h>\n#include <stddef.h>\n#include <stdint.h>\n"
+    "#include <cmocka.h>\n#include <signal.h>\n#include <stdlib.h>\n#include \"fake.h\"\n"
+    "static void adds_small_numbers(void **s) { (void)s; assert_int_equal(fake_add(2, 3), 5); }\n"
+    "static void not_in_points_file(void **s) { (void)s; }\n"
+    "static void message_with_quotes(void **s) { (void)s;\n"
+    "    fail_msg(\"say \\\"hi\\\" \\\\ tab\\there esc\\033 end\"); }\n"
+    "static void crash_caught_by_cmocka(void **s) { (void)s; raise(SIGSEGV); }\n"
+    "static void aborts(void **s) { (void)s; abort(); }\n"
+    "static void after_the_abort(void **s) { (void)s; assert_int_equal(fake_add(1, 1), 2); }\n"
+    "static void hangs(void **s) { (void)s; for (volatile int i = 0;; i++) {} }\n"
+    "static void after_the_hang(void **s) { (void)s; assert_int_equal(fake_add(0, 0), 0); }\n"
+    "int main(void) {\n"
+    "    const struct CMUnitTest t[] = {cmocka_unit_test(adds_small_numbers),\n"
+    "        cmocka_unit_test(not_in_points_file), cmocka_unit_test(message_with_quotes),\n"
+    "        cmocka_unit_test(crash_caught_by_cmocka), cmocka_unit_test(aborts),\n"
+    "        cmocka_unit_test(after_the_abort), cmocka_unit_test(hangs),\n"
+    "        cmocka_unit_test(after_the_hang)};\n"
+    "    return cmocka_run_group_tests(t, NULL, NULL);\n}\n";
+
+static const char TEST_OTHER_C[] =
+    "#include <setjmp.h>\n#include <stdarg.h>\n#include <stddef.h>\n#include <stdint.h>\n"
+    "#include <cmocka.h>\n#include \"fake.h\"\n"
+    "static void other_binary_passes(void **s) { (void)s; assert_int_equal(fake_add(-1, 1), 0); }\n"
+    "int main(void) {\n"
+    "    const struct CMUnitTest t[] = {cmocka_unit_test(other_binary_passes)};\n"
+    "    return cmocka_run_group_tests(t, NULL, NULL);\n}\n";
+
+/* Points: 2 + 1 + 1 + 1 + 1 + 1 + 1 + 1 + 2 = 11 in all. With the solution,
+ * what passes is adds_small_numbers (2), after_the_abort (1),
+ * after_the_hang (1) and other_binary_passes (2): 6. */
+static const char POINTS[] =
+    "# test                 points  what it checks\n"
+    "adds_small_numbers       2     fake_add(): 2 + 3\n"
+    "message_with_quotes      1     a message with \"quotes\"\n"
+    "crash_caught_by_cmocka   1     a segmentation fault that cmocka catches\n"
+    "\n"
+    "aborts                   1     an abort() that ends the test program\n"
+    "after_the_abort          1     fake_add(): after the abort\n"
+    "hangs                    1     an endless loop\n"
+    "after_the_hang           1     fake_add(): after the hang\n"
+    "listed_but_missing       1     a test no program has\n"
+    "other_binary_passes      2     fake_add(): -1 + 1, in another test program\n";
+#define EXPECTED_SCORE 6.0
+#define EXPECTED_MAX 11.0
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *fp = fopen(path, "w");
+    if (!fp || fputs(text, fp) == EOF || fclose(fp) != 0)
+        fail_msg("cannot write %s", path);
+}
+
+static char *read_text(const char *path)
+{
+    char *data;
+    size_t len;
+    Error err;
+    if (!read_file(path, MAX_FILE, &data, &len, &err))
+        fail_msg("%s", err.msg);
+    return data;
+}
+
+/* run_shell, and the command must succeed. */
+static ShellResult shell_ok(const char *dir, const char *fmt, ...)
+{
+    char command[8192];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(command, sizeof command, fmt, ap);
+    va_end(ap);
+    ShellResult r = run_shell(dir, SHELL_TIMEOUT, "%s", command);
+    if (r.status != 0)
+        fail_msg("`%s` in %s: status %d\n%s", command, dir ? dir : ".", r.status, r.output);
+    return r;
+}
+
+/* A fresh directory under $TEST_OUTPUT/tmp, as an absolute path: the commands
+ * run in the made-up tree, not here. Own buffers: test_dir's rotate. */
+static const char *abs_test_dir(const char *name)
+{
+    static char slots[4][4096];
+    static int next;
+    char *buf = slots[next];
+    next = (next + 1) % 4;
+    char here[4096];
+    if (!getcwd(here, sizeof here))
+        fail_msg("getcwd failed");
+    const char *dir = test_dir(name);
+    if (dir[0] == '/')
+        snprintf(buf, sizeof slots[0], "%s", dir);
+    else if (snprintf(buf, sizeof slots[0], "%s/%s", here, dir) >= (int)sizeof slots[0])
+        fail_msg("path too long: %s/%s", here, dir);
+    return buf;
+}
+
+/* The series' build machinery and the made-up lesson 09_fake, built. */
+static int set_up_tree(void **state)
+{
+    (void)state;
+    snprintf(tree, sizeof tree, "%s", abs_test_dir("grade_tree"));
+    ShellResult r = shell_ok(tree, "mkdir -p tests tools lessons/09_fake tests/09_fake lessons/08_plain");
+    shell_result_free(&r);
+    r = shell_ok(NULL, "cp -R Makefile common scripts %s/ && cp -R tests/support %s/tests/ && "
+                       "cp tools/time_limit.c %s/tools/", tree, tree, tree);
+    shell_result_free(&r);
+    write_text(path_join(tree, "lessons/09_fake/fake.h"), FAKE_H);
+    write_text(path_join(tree, "lessons/09_fake/fake.c"), FAKE_C);
+    write_text(path_join(tree, "lessons/09_fake/main.c"), MAIN_C);
+    write_text(path_join(tree, "lessons/08_plain/main.c"), "int main(void) { return 0; }\n");
+    write_text(path_join(tree, "tests/09_fake/test_fake.c"), TEST_FAKE_C);
+    write_text(path_join(tree, "tests/09_fake/test_other.c"), TEST_OTHER_C);
+    write_text(path_join(tree, "tests/09_fake/points.txt"), POINTS);
+    r = shell_ok(tree, "make -j2 OPT=-O0 all build/tests/09_fake/test_fake build/tests/09_fake/test_other");
+    shell_result_free(&r);
+    return 0;
+}
+
+/* After each test: the made-up lesson as set up, whatever the test changed. */
+static int restore_tree(void **state)
+{
+    (void)state;
+    write_text(path_join(tree, "lessons/09_fake/fake.c"), FAKE_C);
+    write_text(path_join(tree, "tests/09_fake/points.txt"), POINTS);
+    remove(path_join(tree, "tests/09_fake/notes.txt"));
+    return 0;
+}
+
+/* ---- make grade ---- */
+
+static JsonValue read_results(void)
+{
+    char *text = read_text(path_join(tree, "build/grade/results.json"));
+    JsonValue v;
+    char why[256];
+    if (!json_parse(text, strlen(text), &v, why, sizeof why))
+        fail_msg("build/grade/results.json is not JSON: %s\n%s", why, text);
+    free(text);
+    if (v.type != JSON_OBJECT)
+        fail_msg("results.json holds a %s, not an object", json_type_name(v.type));
+    return v;
+}
+
+static const JsonValue *field(const JsonValue *obj, const char *key, JsonType type)
+{
+    const JsonValue *f = json_get(obj, key);
+    if (!f)
+        fail_msg("results.json: no \"%s\"", key);
+    if (f->type != type)
+        fail_msg("results.json: \"%s\" is a %s, want a %s", key, json_type_name(f->type),
+                 json_type_name(type));
+    return f;
+}
+
+/* The entry of tests[] named "09_fake: <name>". */
+static const JsonValue *test_entry(const JsonValue *results, const char *name)
+{
+    const JsonValue *tests = field(results, "tests", JSON_ARRAY);
+    char full[256];
+    snprintf(full, sizeof full, "09_fake: %s", name);
+    for (size_t i = 0; i < tests->count; i++) {
+        const JsonValue *n = json_get(&tests->items[i], "name");
+        if (n && n->type == JSON_STRING && strcmp(n->string, full) == 0)
+            return &tests->items[i];
+    }
+    fail_msg("results.json has no test \"%s\"", full);
+    return NULL;
+}
+
+static void expect_test(const JsonValue *results, const char *name, double score, double max,
+                        const char *output_has)
+{
+    const JsonValue *t = test_entry(results, name);
+    double got = field(t, "score", JSON_NUMBER)->number;
+    double of = field(t, "max_score", JSON_NUMBER)->number;
+    const char *out = field(t, "output", JSON_STRING)->string;
+    const char *status = field(t, "status", JSON_STRING)->string;
+    if (got != score || of != max)
+        fail_msg("%s scored %g/%g, want %g/%g; its output:\n%s", name, got, of, score, max, out);
+    if (max > 0 && strcmp(status, got == max ? "passed" : "failed") != 0)
+        fail_msg("%s scored %g/%g, but its status is %s", name, got, of, status);
+    if (output_has && !strstr(out, output_has))
+        fail_msg("the output of %s should say \"%s\"; it is:\n%s", name, output_has, out);
+}
+
+static void each_failure_costs_only_its_own_points(void **state)
+{
+    (void)state;
+    ShellResult r = shell_ok(tree, "make -j2 OPT=-O0 grade LESSON=09 TIME_LIMIT=1");
+    if (!strstr(r.output, "09_fake: 6/11") || !strstr(r.output, "total 6/11"))
+        fail_msg("the score table should end 09_fake: 6/11:\n%s", r.output);
+    /* The table says what a failed test checks. */
+    assert_non_null(strstr(r.output, "checks: an abort() that ends the test program"));
+    shell_result_free(&r);
+
+    JsonValue v = read_results();
+    assert_true(field(&v, "score", JSON_NUMBER)->number == EXPECTED_SCORE);
+    double max = 0;
+    const JsonValue *tests = field(&v, "tests", JSON_ARRAY);
+    for (size_t i = 0; i < tests->count; i++)
+        max += field(&tests->items[i], "max_score", JSON_NUMBER)->number;
+    assert_true(max == EXPECTED_MAX);
+    /* The solution is there: fake_add() works. */
+    expect_test(&v, "adds_small_numbers", 2, 2, NULL);
+    expect_test(&v, "other_binary_passes", 2, 2, NULL);
+    /* cmocka caught the crash: the test program went on. */
+    expect_test(&v, "crash_caught_by_cmocka", 0, 1, "Segmentation fault");
+    /* The abort and the hang cost their own test, not those after them. */
+    expect_test(&v, "aborts", 0, 1, "crashed: killed by SIGABRT");
+    expect_test(&v, "after_the_abort", 1, 1, NULL);
+    expect_test(&v, "hangs", 0, 1, "did not finish within 1 s");
+    expect_test(&v, "after_the_hang", 1, 1, NULL);
+    expect_test(&v, "listed_but_missing", 0, 1, "did not run");
+    /* Run and shown, but worth nothing: it is not in points.txt. */
+    expect_test(&v, "not_in_points_file", 0, 0, "not in tests/09_fake/points.txt");
+    /* The message comes back character for character through JSON: quotes,
+     * backslash, tab and the escape character (0x1b) included. */
+    expect_test(&v, "message_with_quotes", 0, 1, "say \"hi\" \\ tab\there esc\x1b end");
+    /* A failed test says what it checks. */
+    expect_test(&v, "message_with_quotes", 0, 1, "This test checks: a message with \"quotes\"");
+    json_free(&v);
+}
+
+/* Student code that does not compile: every test of the lesson scores 0,
+ * and the grade is still written. */
+static void code_that_does_not_compile_scores_zero(void **state)
+{
+    (void)state;
+    const char *fake_c = path_join(tree, "lessons/09_fake/fake.c");
+    write_text(fake_c, "int fake_add(int a, int b) { return a + ; }\n");
+    ShellResult r = run_shell(tree, SHELL_TIMEOUT, "make -j2 OPT=-O0 grade LESSON=09 TIME_LIMIT=1");
+    write_text(fake_c, FAKE_C);
+    if (r.status != 0)
+        fail_msg("make grade should grade a lesson that does not compile (status %d):\n%s",
+                 r.status, r.output);
+    if (!strstr(r.output, "grade: the build failed") || !strstr(r.output, "09_fake: 0/11"))
+        fail_msg("want the build errors, then 09_fake: 0/11:\n%s", r.output);
+    shell_result_free(&r);
+    JsonValue v = read_results();
+    assert_true(field(&v, "score", JSON_NUMBER)->number == 0.0);
+    expect_test(&v, "adds_small_numbers", 0, 2, "did not run");
+    json_free(&v);
+}
+
+/* TEST=name: one test, run alone; the exit status says whether it passed
+ * (make turns the script's 1 into its own 2). */
+static void one_test_alone_sets_the_exit_status(void **state)
+{
+    (void)state;
+    ShellResult r = shell_ok(tree, "make OPT=-O0 grade LESSON=09 TEST=after_the_abort");
+    assert_non_null(strstr(r.output, "09_fake: 1/1"));
+    shell_result_free(&r);
+    JsonValue v = read_results();
+    assert_int_equal(field(&v, "tests", JSON_ARRAY)->count, 1);
+    expect_test(&v, "after_the_abort", 1, 1, NULL);
+    json_free(&v);
+
+    r = run_shell(tree, SHELL_TIMEOUT, "make OPT=-O0 grade LESSON=09 TEST=aborts");
+    if (r.status == 0 || !strstr(r.output, "09_fake: 0/1"))
+        fail_msg("make grade TEST=aborts should fail, scoring 0/1 (status %d):\n%s", r.status,
+                 r.output);
+    shell_result_free(&r);
+
+    r = run_shell(tree, SHELL_TIMEOUT, "make OPT=-O0 grade LESSON=09 TEST=no_such_test");
+    if (r.status == 0 || !strstr(r.output, "grade: error: no test no_such_test in tests/09_fake/points.txt"))
+        fail_msg("make grade TEST=no_such_test: status %d:\n%s", r.status, r.output);
+    shell_result_free(&r);
+}
+
+static void malformed_points_file_is_refused_with_its_line(void **state)
+{
+    (void)state;
+    const char *points = path_join(tree, "tests/09_fake/points.txt");
+    const char *bad[][2] = {
+        {"adds_small_numbers 2 ok\nadds_small_numbers 1 again\n", "points.txt:2: "},
+        {"adds_small_numbers two words\n", "points: a number"},
+        {"adds_small_numbers 2\n", "a few words on what the test checks"},
+        {"adds-small 2 dash\n", "a test name, a C identifier"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        write_text(points, bad[i][0]);
+        ShellResult r = run_shell(tree, SHELL_TIMEOUT, "sh scripts/grade.sh --build build 09_fake");
+        int status = r.status;
+        bool said = strstr(r.output, bad[i][1]) && strstr(r.output, "points.txt is malformed");
+        char *out = r.output;
+        r.output = NULL;
+        if (status != 1 || !said) {
+            write_text(points, POINTS);
+            fail_msg("points file %s: want status 1 and \"%s\", got %d:\n%s", bad[i][0],
+                     bad[i][1], status, out);
+        }
+        free(out);
+    }
+    write_text(points, POINTS);
+}
+
+/* ---- make handout ---- */
+
+static void handout_replaces_the_region_by_stub_and_hint(void **state)
+{
+    (void)state;
+    const char *dest = abs_test_dir("grade_handout");
+    ShellResult r = shell_ok(tree, "sh scripts/handout.sh --only --dest %s/h 09", dest);
+    assert_non_null(strstr(r.output, "lessons/09_fake/fake.c:6:"));
+    shell_result_free(&r);
+    const char *h = path_join(dest, "h");
+    char *fake = read_text(path_join(h, "lessons/09_fake/fake.c"));
+    const char *want =
+        "int fake_add(int a, int b)\n{\n"
+        "    /* TODO(student): return the sum of a and b */\n"
+        "    (void)a; (void)b;\n    return 0;\n}\n";
+    if (!strstr(fake, want))
+        fail_msg("the handout's fake.c should hold\n%s\nit is\n%s", want, fake);
+    assert_null(strstr(fake, "a + b"));
+    assert_null(strstr(fake, "SOLUTION"));
+    free(fake);
+    assert_true(file_exists(path_join(h, ".handout")));
+    assert_true(file_exists(path_join(h, "Makefile")));
+    assert_true(file_exists(path_join(h, "tests/09_fake/points.txt")));
+    assert_true(file_exists(path_join(h, "tools/time_limit.c")));
+    assert_false(file_exists(path_join(h, "lessons/08_plain"))); /* --only */
+    /* Again into the same place: an earlier handout is replaced. */
+    r = shell_ok(tree, "sh scripts/handout.sh --only --dest %s/h 09", dest);
+    shell_result_free(&r);
+}
+
+/* What must stop the handout, and the message that says why. Nothing is
+ * written: neither DEST nor a temporary tree beside it. */
+static void expect_refused_handout(const char *lesson, int status, const char *message)
+{
+    const char *dest = abs_test_dir("grade_refused");
+    ShellResult r = run_shell(tree, SHELL_TIMEOUT, "sh scripts/handout.sh --dest %s/h %s", dest,
+                              lesson);
+    if (r.status != status || !strstr(r.output, message))
+        fail_msg("handout %s: want status %d and \"%s\", got %d:\n%s", lesson, status, message,
+                 r.status, r.output);
+    shell_result_free(&r);
+    r = run_shell(NULL, 10, "ls -A %s", dest);
+    if (r.status != 0 || r.output[0] != '\0')
+        fail_msg("a refused handout left files in %s:\n%s", dest, r.output);
+    shell_result_free(&r);
+}
+
+static void handout_refuses_a_tree_that_gives_a_solution_line_away(void **state)
+{
+    (void)state;
+    const char *notes = path_join(tree, "tests/09_fake/notes.txt");
+    write_text(notes, "the answer:\n  int sum = a + b;   /* see? */\n");
+    expect_refused_handout("09", 1, "tests/09_fake/notes.txt:2 has lessons/09_fake/fake.c:7");
+    remove(notes);
+}
+
+static void handout_refuses_malformed_markers(void **state)
+{
+    (void)state;
+    const char *fake_c = path_join(tree, "lessons/09_fake/fake.c");
+    const char *broken[][2] = {
+        {"/* SOLUTION BEGIN: x */\nint f;\n", "fake.c:1: the SOLUTION region begun here has no SOLUTION END"},
+        {"int f;\n/* SOLUTION END */\n", "fake.c:2: SOLUTION END without a SOLUTION BEGIN"},
+        {"/* SOLUTION BEGIN: x */\n/* SOLUTION BEGIN: y */\n/* SOLUTION END */\n", "fake.c:2: SOLUTION BEGIN inside another region"},
+        {"/* SOLUTION BEGIN x */\n", "fake.c:1: malformed SOLUTION marker"},
+        {"/* SOLUTION BEGIN: */\nint f;\n/* SOLUTION END */\n", "fake.c:1: a SOLUTION BEGIN marker without a hint"},
+        {"/* SOLUTION BEGIN: x */\n/* SOLUTION STUB\nint f;\n/* SOLUTION END */\n", "fake.c:4: a SOLUTION marker inside a stub"},
+    };
+    for (size_t i = 0; i < sizeof broken / sizeof broken[0]; i++) {
+        write_text(fake_c, broken[i][0]);
+        expect_refused_handout("09", 1, broken[i][1]);
+    }
+    write_text(fake_c, FAKE_C);
+}
+
+static void handout_refuses_bad_requests(void **state)
+{
+    (void)state;
+    expect_refused_handout("08", 1, "lessons/08_plain has no SOLUTION BEGIN marker");
+    expect_refused_handout("07", 2, "no lesson LESSON=07 in lessons/");
+    expect_refused_handout("", 2, "which lesson?");
+    /* A DEST that holds something else is left alone. */
+    const char *dest = abs_test_dir("grade_foreign");
+    write_text(path_join(dest, "precious.txt"), "keep me\n");
+    ShellResult r = run_shell(tree, SHELL_TIMEOUT, "sh scripts/handout.sh --dest %s 09", dest);
+    if (r.status != 2 || !strstr(r.output, "is not an earlier handout"))
+        fail_msg("handout into a foreign directory: status %d\n%s", r.status, r.output);
+    shell_result_free(&r);
+    assert_true(file_exists(path_join(dest, "precious.txt")));
+    assert_false(file_exists(path_join(dest, "Makefile")));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test_teardown(each_failure_costs_only_its_own_points, restore_tree),
+        cmocka_unit_test_teardown(code_that_does_not_compile_scores_zero, restore_tree),
+        cmocka_unit_test_teardown(one_test_alone_sets_the_exit_status, restore_tree),
+        cmocka_unit_test_teardown(malformed_points_file_is_refused_with_its_line, restore_tree),
+        cmocka_unit_test_teardown(handout_replaces_the_region_by_stub_and_hint, restore_tree),
+        cmocka_unit_test_teardown(handout_refuses_a_tree_that_gives_a_solution_line_away, restore_tree),
+        cmocka_unit_test_teardown(handout_refuses_malformed_markers, restore_tree),
+        cmocka_unit_test_teardown(handout_refuses_bad_requests, restore_tree),
+    };
+    return cmocka_run_group_tests_name("tools: make grade and make handout on a made-up lesson",
+                                       tests, set_up_tree, NULL);
+}

@@ -1,0 +1,947 @@
+/* test_handout.c: make handout and make grade on every lesson of the series.
+ *
+ * For each lesson in lessons/ (one cmocka test each):
+ *   1. make handout ONLY=1 writes the student's tree into a temporary directory;
+ *   2. the handout builds; no line that only the solution has is in it; the
+ *      lesson's tests fail, and each failure has a hint that names a function
+ *      with a TODO(student) in it; every test with points fails (one that
+ *      passes without the student's work must be worth 0 in points.txt);
+ *   3. the solution regions are put back: make grade runs every test, each
+ *      passes, the score is full marks, and every test is in points.txt;
+ *   4. the mistakes of docs/teaching.md, made on purpose in the solution, lose
+ *      exactly the points of the tests that the page says catch them.
+ *
+ * Quick by design: handouts leave the other lessons out, build with make -j2,
+ * compile common/ once (seed_build), and run only the lesson's tests. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <ctype.h>
+#include <dirent.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "file.h"
+#include "json.h"
+#include "shell.h"
+#include "test_support.h"
+
+#define SHELL_TIMEOUT 300 /* seconds for one build, test or grade */
+#define MAX_FILE (1 << 22)
+#define PATH_MAX_LEN 4096
+#define MAX_LESSONS 32
+#define MAX_LINES 4096
+#define MIN_CODE 8 /* shorter lines, like "break;", give nothing away */
+
+/* The make options of every build and run here (see main). */
+static char make_opts[64];
+
+/* ---- a deliberate mistake, and the tests that must catch it ---- */
+
+typedef struct {
+    const char *lesson;   /* a lesson directory name */
+    const char *mistake;  /* the name docs/teaching.md gives it */
+    const char *file;     /* in the lesson directory */
+    const char *from, *to; /* the edit: from must occur exactly once */
+    bool every_run;           /* made in every run; the others with TEST_ALL_MISTAKES=1 */
+    const char *caught_by[48]; /* exactly the tests that fail, NULL-terminated */
+} Mistake;
+
+/* docs/teaching.md, "The usual mistakes": each made on purpose, with the
+ * tests that must catch it and no other. A grade costs seconds, so a quick
+ * set runs every time: lesson 01's (its tests take a second),
+ * lesson 02's inverted test and lesson 03's linear z. TEST_ALL_MISTAKES=1
+ * makes all of them, to check the page after a change to a lesson or its tests. */
+static const Mistake MISTAKES[] = {
+    {"01_ybuffer", "the inverted test", "ybuffer.h",
+     "return y > stored;",
+     "return y < stored;",
+     true,
+     {"all_six_orders_agree_except_the_tie",
+      "default_run_prints_the_summary_and_writes_three_pictures",
+      "default_render_has_the_derived_runs",
+      "depth_test_is_strict_larger_y_wins",
+      "equal_segments_first_drawn_keeps_every_column",
+      "no_arguments_writes_out_01_ybuffer_png",
+      "order_312_changes_only_the_tie_column",
+      "render_shows_the_runs_on_every_row",
+      "scene_puts_world_y_up",
+      "segment_at_the_coordinate_limit",
+      "segment_wider_than_the_screen_is_clipped_to_it",
+      "segments_file_with_the_default_scene_gives_the_default_picture",
+      "steps_write_a_render_and_a_ybuffer_per_segment",
+      "vertical_and_off_screen_segments_from_a_file",
+      "vertical_segment_is_one_column_at_its_nearest_y",
+      "ybuffer_after_each_step",
+      "ybuffer_strip_is_brightest_where_nearest", NULL}},
+    {"01_ybuffer", "the wrong initial value", "ybuffer.c",
+     "yb->y[x] = YBUFFER_CLEARED;",
+     "yb->y[x] = 0;",
+     true,
+     {"default_run_prints_the_summary_and_writes_three_pictures",
+      "segment_outside_the_screen_wins_nothing",
+      "vertical_segment_is_one_column_at_its_nearest_y",
+      "ybuffer_after_each_step",
+      "ybuffer_strip_is_brightest_where_nearest", NULL}},
+    {"02_zbuffer", "the inverted test", "raster.c",
+     "bool passed = d < stored;",
+     "bool passed = d > stored;",
+     true,
+     {"clear_to_zero_draws_nothing",
+      "clear_zero_picture_is_background_only",
+      "default_render_matches_expected",
+      "depth_is_interpolated_linearly_at_chosen_pixels",
+      "depth_of_triangles3_is_linear_on_the_screen",
+      "equal_depth_keeps_the_first_face",
+      "every_scene_matches_expected",
+      "fill_back_to_front_bench_draws_what_render_faces_draws",
+      "fill_front_to_back_bench_draws_what_render_faces_draws",
+      "huge_triangle_covers_the_whole_screen",
+      "mesh_bench_draws_what_render_faces_draws",
+      "obj_file_is_framed_and_coloured",
+      "obj_sized_triangle_fills_the_view_or_nothing",
+      "painter_gets_triangles3_wrong",
+      "screen_covered_many_times_costs_the_screen",
+      "separate_buffers_let_the_last_object_cover_the_first",
+      "summary_agrees_with_the_written_files",
+      "trace_winner_is_the_pictures_colour_on_random_pixels",
+      "wrong_pictures_match_expected",
+      "zbuffer_resolves_the_cycle_of_triangles3", NULL}},
+    {"02_zbuffer", "the wrong initial value", "raster.c",
+     "\"02_zbuffer\", INFINITY, draw_face",
+     "\"02_zbuffer\", 0.0f, draw_face",
+     false,
+     {"default_render_matches_expected",
+      "depth_is_interpolated_linearly_at_chosen_pixels",
+      "depth_of_triangles3_is_linear_on_the_screen",
+      "equal_depth_keeps_the_first_face",
+      "every_scene_matches_expected",
+      "fill_back_to_front_bench_draws_what_render_faces_draws",
+      "fill_front_to_back_bench_draws_what_render_faces_draws",
+      "huge_triangle_covers_the_whole_screen",
+      "mesh_bench_draws_what_render_faces_draws",
+      "obj_file_is_framed_and_coloured",
+      "obj_sized_triangle_fills_the_view_or_nothing",
+      "painter_gets_triangles3_wrong",
+      "screen_covered_many_times_costs_the_screen",
+      "separate_buffers_let_the_last_object_cover_the_first",
+      "summary_agrees_with_the_written_files",
+      "trace_winner_is_the_pictures_colour_on_random_pixels",
+      "wrong_pictures_match_expected",
+      "zbuffer_resolves_the_cycle_of_triangles3", NULL}},
+    {"02_zbuffer", "one buffer per object", "raster.c",
+     "bool passed = d < stored;",
+     "bool passed = d < stored || t->face[i] != face; /* as if each face had its own buffer */",
+     false,
+     {"clear_to_zero_draws_nothing",
+      "clear_zero_picture_is_background_only",
+      "default_render_matches_expected",
+      "depth_of_triangles3_is_linear_on_the_screen",
+      "equal_depth_keeps_the_first_face",
+      "every_scene_matches_expected",
+      "fill_front_to_back_bench_draws_what_render_faces_draws",
+      "order_does_not_change_the_picture",
+      "scene_order_does_not_change_the_picture",
+      "separate_buffers_let_the_last_object_cover_the_first",
+      "summary_agrees_with_the_written_files",
+      "zbuffer_resolves_the_cycle_of_triangles3", NULL}},
+    {"02_zbuffer", "holes from float edges", "raster.c",
+     "return e > 0 || (e == 0 && top_left);",
+     "(void)top_left;\n    return e > 0;",
+     false,
+     {"fan_of_thin_triangles_covers_once",
+      "fill_back_to_front_bench_draws_what_render_faces_draws",
+      "fill_front_to_back_bench_draws_what_render_faces_draws",
+      "grid_lines_through_centres_draw_each_pixel_once",
+      "grid_on_pixel_centres_follows_top_left",
+      "jittered_grid_covers_rectangle_once",
+      "jittered_grid_of_quads_covers_rectangle_once",
+      "shared_edge_drawn_once_in_every_direction",
+      "shared_vertex_drawn_once",
+      "top_left_rule_in_every_orientation_and_winding",
+      "top_left_rule_on_a_right_triangle", NULL}},
+    {"03_perspective_z", "linear z under perspective", "raster.c",
+     "return 1 / inv_d;",
+     "(void)inv_d;\n    return w.w0 / inv_d0 + w.w1 / inv_d1 + w.w2 / inv_d2;",
+     true,
+     {"compare_naive_marks_the_pixels_the_naive_rule_gets_wrong",
+      "default_render_matches_expected",
+      "depth_out_is_where_the_ray_meets_the_plane",
+      "every_scene_by_face_id_matches_expected",
+      "huge_triangle_keeps_each_rules_depth_through_the_guard_band",
+      "inverse_depth_is_linear_at_chosen_pixels",
+      "negated_w_shows_the_farther_strip_everywhere",
+      "perspective_rule_puts_the_seam_on_the_line",
+      "triangles3_depth_is_where_the_ray_meets_the_plane",
+      "worked_example_gives_2_5_and_naive_gives_2_7", NULL}},
+    {"04_scanline_inverse_z", "the inverted test", "scanline.c",
+     "bool passed = inv_d > stored;",
+     "bool passed = inv_d < stored;",
+     false,
+     {"an_obj_mesh_agrees_with_lesson_03",
+      "ascii_and_trace_speak_of_inverse_depth",
+      "clear_to_zero_loses_to_a_far_surface",
+      "coverage_equals_the_edge_function_rule",
+      "default_run_draws_the_walls_and_finds_the_front_object",
+      "depth_interp_naive_and_compare_naive",
+      "depth_out_writes_view_depth_not_its_inverse",
+      "diamond_with_edges_through_pixel_centres",
+      "equal_depth_keeps_the_first_face",
+      "equal_depth_keeps_the_first_fragment",
+      "every_built_in_scene_agrees_with_lesson_03",
+      "every_scene_matches_its_expected_pictures",
+      "far_plane_discards_before_the_test",
+      "fill_back_to_front_bench_draws_what_render_faces_draws",
+      "fill_front_to_back_bench_draws_what_render_faces_draws",
+      "huge_triangle_covers_the_whole_screen",
+      "inverse_depth_is_linear_across_the_span",
+      "inverse_depth_is_linear_down_the_edges",
+      "larger_inverse_depth_wins",
+      "mesh_bench_draws_what_render_faces_draws",
+      "naive_rule_differs_where_lesson_03s_does",
+      "naive_rule_steps_depth_itself",
+      "non_convex_face_is_drawn_as_its_triangles",
+      "obj_sized_triangle_fills_the_view_or_nothing",
+      "octagon",
+      "pentagon",
+      "screen_covered_many_times_costs_the_screen",
+      "screen_polygon_at_depth_6_shows_only_around_the_triangle",
+      "square_on_pixel_centres_keeps_top_and_left",
+      "square_with_horizontal_edges",
+      "stepping_along_a_long_span_stays_accurate",
+      "tiny_triangles_cover_one_pixel_or_none",
+      "trace_winner_is_the_pictures_colour_on_random_pixels",
+      "triangle_at_depth_5_in_front_of_nothing",
+      "triangle_with_its_hypotenuse_on_the_left",
+      "triangle_with_its_hypotenuse_on_the_right",
+      "two_buffers_do_not_depend_on_drawing_order",
+      "unit_square_covers_one_pixel", NULL}},
+    {"04_scanline_inverse_z", "the wrong initial value", "scanline.h",
+     "#define CLEARED_INV_DEPTH 0.0f",
+     "#define CLEARED_INV_DEPTH INFINITY",
+     false,
+     {"an_obj_mesh_agrees_with_lesson_03",
+      "ascii_and_trace_speak_of_inverse_depth",
+      "clear_to_zero_loses_to_a_far_surface",
+      "clear_to_zero_means_nothing_drawn",
+      "coverage_equals_the_edge_function_rule",
+      "default_run_draws_the_walls_and_finds_the_front_object",
+      "depth_interp_naive_and_compare_naive",
+      "depth_out_writes_view_depth_not_its_inverse",
+      "diamond_with_edges_through_pixel_centres",
+      "equal_depth_keeps_the_first_face",
+      "equal_depth_keeps_the_first_fragment",
+      "every_built_in_scene_agrees_with_lesson_03",
+      "every_scene_matches_its_expected_pictures",
+      "far_plane_discards_before_the_test",
+      "fill_back_to_front_bench_draws_what_render_faces_draws",
+      "fill_front_to_back_bench_draws_what_render_faces_draws",
+      "huge_triangle_covers_the_whole_screen",
+      "inverse_depth_is_linear_across_the_span",
+      "inverse_depth_is_linear_down_the_edges",
+      "larger_inverse_depth_wins",
+      "mesh_bench_draws_what_render_faces_draws",
+      "naive_rule_differs_where_lesson_03s_does",
+      "naive_rule_steps_depth_itself",
+      "non_convex_face_is_drawn_as_its_triangles",
+      "nothing_at_the_centre_is_reported",
+      "obj_sized_triangle_fills_the_view_or_nothing",
+      "octagon",
+      "pentagon",
+      "screen_covered_many_times_costs_the_screen",
+      "screen_polygon_at_depth_6_shows_only_around_the_triangle",
+      "square_on_pixel_centres_keeps_top_and_left",
+      "square_with_horizontal_edges",
+      "stepping_along_a_long_span_stays_accurate",
+      "tiny_triangles_cover_one_pixel_or_none",
+      "trace_winner_is_the_pictures_colour_on_random_pixels",
+      "triangle_at_depth_5_in_front_of_nothing",
+      "triangle_with_its_hypotenuse_on_the_left",
+      "triangle_with_its_hypotenuse_on_the_right",
+      "two_buffers_do_not_depend_on_drawing_order",
+      "unit_square_covers_one_pixel", NULL}},
+};
+
+/* ---- files ---- */
+
+static char *read_text(const char *path)
+{
+    char *data = NULL;
+    size_t len = 0;
+    Error err;
+    if (!read_file(path, MAX_FILE, &data, &len, &err))
+        fail_msg("%s", err.msg);
+    char *copy = strdup(data);
+    free(data);
+    assert_non_null(copy);
+    return copy;
+}
+
+static void write_text(const char *path, const char *text)
+{
+    FILE *fp = fopen(path, "w");
+    if (!fp || fputs(text, fp) == EOF || fclose(fp) != 0)
+        fail_msg("cannot write %s", path);
+}
+
+/* run_shell; with TEST_TIMING=1 in the environment it prints how long each
+ * command took (where the seconds of this test go). */
+static ShellResult timed_shell(const char *dir, const char *command)
+{
+    struct timespec start, end;
+    clock_gettime(CLOCK_MONOTONIC, &start);
+    ShellResult r = run_shell(dir, SHELL_TIMEOUT, "%s", command);
+    clock_gettime(CLOCK_MONOTONIC, &end);
+    const char *timing = getenv("TEST_TIMING");
+    if (timing && strcmp(timing, "1") == 0)
+        print_message("%6.2f s  %.100s\n",
+                      (double)(end.tv_sec - start.tv_sec) + (double)(end.tv_nsec - start.tv_nsec) / 1e9,
+                      command);
+    return r;
+}
+
+static ShellResult shell(const char *dir, const char *fmt, ...)
+{
+    char command[8192];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(command, sizeof command, fmt, ap);
+    va_end(ap);
+    return timed_shell(dir, command);
+}
+
+static void shell_ok(const char *dir, const char *fmt, ...)
+{
+    char command[8192];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(command, sizeof command, fmt, ap);
+    va_end(ap);
+    ShellResult r = timed_shell(dir, command);
+    if (r.status != 0)
+        fail_msg("`%s` in %s: status %d\n%s", command, dir ? dir : ".", r.status, r.output);
+    shell_result_free(&r);
+}
+
+/* "$PWD/$TEST_OUTPUT/tmp/<name>", fresh: the commands run in other directories. */
+static void abs_test_dir(const char *name, char *out, size_t size)
+{
+    char here[PATH_MAX_LEN];
+    if (!getcwd(here, sizeof here))
+        fail_msg("getcwd failed");
+    const char *dir = test_dir(name);
+    int n = dir[0] == '/' ? snprintf(out, size, "%s", dir) : snprintf(out, size, "%s/%s", here, dir);
+    if (n < 0 || (size_t)n >= size)
+        fail_msg("path too long: %s", dir);
+}
+
+/* ---- the lines only the solution has (an oracle of its own, in C) ---- */
+
+typedef struct {
+    char *code[MAX_LINES];
+    char where[MAX_LINES][128];
+    int n;
+    char *outside[MAX_LINES * 4]; /* lines outside regions, or in stubs */
+    int n_outside;
+} SolutionLines;
+
+/* A line's code: trimmed, without a trailing comment and a final ";" (a
+ * header and its declaration are one line); in place. */
+static char *code_of(char *s)
+{
+    while (isspace((unsigned char)*s))
+        s++;
+    char *c = strstr(s, "/*");
+    if (c && c > s)
+        *c = '\0';
+    c = strstr(s, "//");
+    if (c && c > s)
+        *c = '\0';
+    size_t n = strlen(s);
+    while (n > 0 && isspace((unsigned char)s[n - 1]))
+        s[--n] = '\0';
+    if (n > 0 && s[n - 1] == ';')
+        s[--n] = '\0';
+    return s;
+}
+
+/* Worth looking for: MIN_CODE characters or more, not a comment, and a name
+ * in it that is not a keyword of C ("} else {" is in every file). */
+static bool significant(const char *c)
+{
+    static const char *const keywords[] = {
+        "auto", "bool", "break", "case", "char", "const", "continue", "default", "do",
+        "double", "else", "enum", "extern", "false", "float", "for", "goto", "if", "inline",
+        "int", "long", "register", "restrict", "return", "short", "signed", "sizeof",
+        "static", "struct", "switch", "true", "typedef", "union", "unsigned", "void",
+        "volatile", "while", "NULL"};
+    if (strlen(c) < MIN_CODE || c[0] == '*' || strncmp(c, "/*", 2) == 0 ||
+        strncmp(c, "//", 2) == 0 || strncmp(c, "<!--", 4) == 0)
+        return false;
+    while (*c) {
+        if (!(isalpha((unsigned char)*c) || *c == '_')) {
+            c++;
+            continue;
+        }
+        size_t n = 0;
+        while (isalnum((unsigned char)c[n]) || c[n] == '_')
+            n++;
+        bool keyword = false;
+        for (size_t k = 0; k < sizeof keywords / sizeof keywords[0]; k++)
+            keyword |= strlen(keywords[k]) == n && strncmp(c, keywords[k], n) == 0;
+        if (!keyword)
+            return true;
+        c += n;
+    }
+    return false;
+}
+
+static void collect_regions(SolutionLines *s, const char *path)
+{
+    char *text = read_text(path);
+    bool md = strstr(path, ".md") != NULL;
+    const char *close = md ? "-->" : "*/";
+    enum { OUT, HINT, CODE, STUB } state = OUT;
+    int line_no = 0;
+    for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n")) {
+        line_no++;
+        char *c = code_of(line);
+        bool marker = strstr(line, "SOLUTION BEGIN:") || strstr(line, "SOLUTION END") ||
+                      strstr(line, "SOLUTION STUB");
+        if (state == HINT) {
+            if (strstr(line, close))
+                state = CODE;
+            continue;
+        }
+        if (state == STUB) {
+            if (strcmp(c, close) == 0)
+                state = CODE;
+            else if (s->n_outside < MAX_LINES * 4)
+                s->outside[s->n_outside++] = strdup(c);
+            continue;
+        }
+        if (marker && strstr(line, "SOLUTION BEGIN:")) {
+            state = strstr(line, close) ? CODE : HINT;
+            continue;
+        }
+        if (marker && strstr(line, "SOLUTION STUB")) {
+            state = STUB;
+            continue;
+        }
+        if (marker && strstr(line, "SOLUTION END")) {
+            state = OUT;
+            continue;
+        }
+        if (state == CODE) {
+            /* The solution lines are those of the code: a page's region only
+             * hides a quote of it. */
+            if (!md && significant(c) && s->n < MAX_LINES) {
+                s->code[s->n] = strdup(c);
+                snprintf(s->where[s->n], sizeof s->where[0], "%.100s:%d", path, line_no);
+                s->n++;
+            }
+        } else if (s->n_outside < MAX_LINES * 4) {
+            s->outside[s->n_outside++] = strdup(c);
+        }
+    }
+    free(text);
+}
+
+static bool is_outside(const SolutionLines *s, const char *code)
+{
+    for (int i = 0; i < s->n_outside; i++)
+        if (strcmp(s->outside[i], code) == 0)
+            return true;
+    return false;
+}
+
+static void free_solution_lines(SolutionLines *s)
+{
+    for (int i = 0; i < s->n; i++)
+        free(s->code[i]);
+    for (int i = 0; i < s->n_outside; i++)
+        free(s->outside[i]);
+    free(s);
+}
+
+/* Fails the test if a file under dir (recursively) holds a solution line.
+ * Other lessons (a handout keeps, as they are, those its tests run) are not
+ * searched: in lessons/, only the lesson itself is. */
+static void expect_no_solution_line(const SolutionLines *s, const char *dir, const char *lesson,
+                                    int *files)
+{
+    size_t dir_len = strlen(dir);
+    bool in_lessons = dir_len >= 8 && strcmp(dir + dir_len - 8, "/lessons") == 0;
+    DIR *d = opendir(dir);
+    if (!d)
+        fail_msg("cannot read the directory %s", dir);
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0 ||
+            strcmp(e->d_name, "build") == 0)
+            continue;
+        char path[PATH_MAX_LEN];
+        snprintf(path, sizeof path, "%s/%s", dir, e->d_name);
+        struct stat st;
+        if (stat(path, &st) != 0)
+            continue;
+        if (S_ISDIR(st.st_mode)) {
+            if (!in_lessons || strcmp(e->d_name, lesson) == 0)
+                expect_no_solution_line(s, path, lesson, files);
+            continue;
+        }
+        const char *dot = strrchr(e->d_name, '.');
+        if (dot && (strcmp(dot, ".png") == 0 || strcmp(dot, ".pfm") == 0 || strcmp(dot, ".pgm") == 0))
+            continue;
+        (*files)++;
+        char *text = read_text(path);
+        int line_no = 0;
+        for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n")) {
+            line_no++;
+            char *c = code_of(line);
+            for (int i = 0; i < s->n; i++)
+                if (strcmp(c, s->code[i]) == 0 && !is_outside(s, c)) {
+                    char msg[PATH_MAX_LEN + 256];
+                    snprintf(msg, sizeof msg, "%s:%d holds %s, a line of the solution: %s", path,
+                             line_no, s->where[i], c);
+                    free(text);
+                    closedir(d);
+                    fail_msg("%s", msg);
+                }
+        }
+        free(text);
+    }
+    closedir(d);
+}
+
+/* The lesson's files with regions (and its page, if it has some). */
+static SolutionLines *solution_lines(const char *lesson)
+{
+    SolutionLines *s = calloc(1, sizeof *s);
+    assert_non_null(s);
+    char dir[PATH_MAX_LEN];
+    snprintf(dir, sizeof dir, "lessons/%s", lesson);
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL)
+        if (e->d_name[0] != '.')
+            collect_regions(s, path_join(dir, e->d_name));
+    closedir(d);
+    char page[PATH_MAX_LEN];
+    snprintf(page, sizeof page, "docs/%s.md", lesson);
+    if (file_exists(page))
+        collect_regions(s, page);
+    return s;
+}
+
+/* ---- results.json ---- */
+
+typedef struct {
+    double score, max;
+    JsonValue json;
+} Grade;
+
+static const JsonValue *field(const JsonValue *obj, const char *key, JsonType type)
+{
+    const JsonValue *f = json_get(obj, key);
+    if (!f || f->type != type)
+        fail_msg("results.json: \"%s\" is missing or not a %s", key, json_type_name(type));
+    return f;
+}
+
+/* Reads build/grade/results.json (a real JSON parser, not a grep) and checks
+ * it has the fields Gradescope reads: tests[] of {name, score, max_score,
+ * output}, and the overall score, which is the sum of the tests' scores. */
+static Grade read_grade(const char *build)
+{
+    char *text = read_text(path_join(build, "grade/results.json"));
+    Grade g = {0, 0, {0}};
+    char why[256];
+    if (!json_parse(text, strlen(text), &g.json, why, sizeof why))
+        fail_msg("results.json is not JSON: %s", why);
+    free(text);
+    const JsonValue *tests = field(&g.json, "tests", JSON_ARRAY);
+    if (tests->count == 0)
+        fail_msg("results.json: no tests");
+    for (size_t i = 0; i < tests->count; i++) {
+        field(&tests->items[i], "name", JSON_STRING);
+        field(&tests->items[i], "output", JSON_STRING);
+        g.score += field(&tests->items[i], "score", JSON_NUMBER)->number;
+        g.max += field(&tests->items[i], "max_score", JSON_NUMBER)->number;
+    }
+    if (field(&g.json, "score", JSON_NUMBER)->number != g.score)
+        fail_msg("results.json: the score %g is not the sum of the tests' scores, %g",
+                 field(&g.json, "score", JSON_NUMBER)->number, g.score);
+    return g;
+}
+
+/* The entry for test `name` of lesson; NULL if there is none. */
+static const JsonValue *grade_entry(const Grade *g, const char *lesson, const char *name)
+{
+    char full[512];
+    snprintf(full, sizeof full, "%s: %s", lesson, name);
+    const JsonValue *tests = json_get(&g->json, "tests");
+    for (size_t i = 0; i < tests->count; i++)
+        if (strcmp(json_get(&tests->items[i], "name")->string, full) == 0)
+            return &tests->items[i];
+    return NULL;
+}
+
+/* ---- the steps ---- */
+
+/* What the handout's lesson asks the student to write, as " name() name2()":
+ * each function that holds a TODO(student) (the last function header before
+ * it: a line at column 0 with a "(" and no ";" at its end), and for a TODO
+ * outside functions, the variable its stub defines ("const T NAME = ..."). */
+static void todo_functions(const char *lesson_dir, char *out, size_t size)
+{
+    out[0] = '\0';
+    DIR *d = opendir(lesson_dir);
+    assert_non_null(d);
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        if (e->d_name[0] == '.')
+            continue;
+        char *text = read_text(path_join(lesson_dir, e->d_name));
+        char current[256] = "";
+        bool top_level_todo = false;
+        for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n")) {
+            size_t n = strlen(line);
+            char *paren = strchr(line, '(');
+            char *equals = strchr(line, '=');
+            char *name = NULL;
+            size_t name_len = 0;
+            if (isalpha((unsigned char)line[0]) && paren && line[n - 1] != ';' &&
+                (!equals || equals > paren)) {
+                /* A function's header: its name is just before the "(". */
+                name = paren;
+                while (name > line && (isalnum((unsigned char)name[-1]) || name[-1] == '_'))
+                    name--;
+                name_len = (size_t)(paren - name);
+                snprintf(current, sizeof current, "%.*s()", (int)name_len, name);
+            } else if (top_level_todo && isalpha((unsigned char)line[0]) && equals) {
+                /* The stub of a region outside functions: a variable, "T NAME = ...". */
+                name = equals;
+                while (name > line && name[-1] == ' ')
+                    name--;
+                char *end = name;
+                while (name > line && (isalnum((unsigned char)name[-1]) || name[-1] == '_'))
+                    name--;
+                snprintf(current, sizeof current, "%.*s", (int)(end - name), name);
+                if (strlen(out) + strlen(current) + 2 < size) {
+                    strcat(out, " ");
+                    strcat(out, current);
+                }
+                top_level_todo = false;
+                current[0] = '\0';
+            }
+            if (strstr(line, "TODO(student):")) {
+                if (line[0] == '/')
+                    top_level_todo = true;
+                else if (current[0] && strlen(out) + strlen(current) + 2 < size) {
+                    strcat(out, " ");
+                    strcat(out, current);
+                }
+            }
+        }
+        free(text);
+    }
+    closedir(d);
+}
+
+/* The tests of tests/<lesson>/points.txt worth more than 0 points. */
+static int pointed_tests(const char *lesson, char names[][256], int max)
+{
+    char path[PATH_MAX_LEN];
+    snprintf(path, sizeof path, "tests/%s/points.txt", lesson);
+    char *text = read_text(path);
+    int n = 0;
+    for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n")) {
+        char name[256];
+        double points;
+        if (line[0] == '#' || sscanf(line, "%255s %lf", name, &points) != 2)
+            continue;
+        if (points > 0 && n < max)
+            snprintf(names[n++], 256, "%s", name);
+    }
+    free(text);
+    return n;
+}
+
+/* make test in the handout: it fails; every failed test gets a hint line
+ * naming one of the functions to write; and every test with points fails
+ * (a test that passes without the student's work is worth 0 points). */
+static void expect_tests_fail_with_hints(const char *h, const char *lesson)
+{
+    ShellResult r = shell(h, "make %s test LESSON=%.2s", make_opts, lesson);
+    if (r.status == 0)
+        fail_msg("make test LESSON=%.2s passed on the handout, with the solution taken out", lesson);
+    char todo[2048];
+    todo_functions(path_join(h, path_join("lessons", lesson)), todo, sizeof todo);
+    if (!todo[0])
+        fail_msg("no function with a TODO(student) in the handout of %s", lesson);
+    int failed = 0;
+    for (char *p = strstr(r.output, "[  FAILED  ] "); p; p = strstr(p + 1, "[  FAILED  ] ")) {
+        char name[256];
+        if (sscanf(p + strlen("[  FAILED  ] "), "%255[A-Za-z0-9_]", name) != 1 ||
+            !(isalpha((unsigned char)name[0]) || name[0] == '_'))
+            continue; /* "[  FAILED  ] 3 test(s), listed below:" */
+        char want[300];
+        snprintf(want, sizeof want, "hint: %s checks ", name);
+        char *hint = strstr(r.output, want);
+        if (!hint)
+            fail_msg("the failed test %s has no hint line (\"%s...\") in make test's output", name,
+                     want);
+        char line[1024];
+        sscanf(hint, "%1023[^\n]", line);
+        char functions[2048];
+        snprintf(functions, sizeof functions, "%s", todo);
+        bool names_one = false;
+        for (char *f = strtok(functions, " "); f; f = strtok(NULL, " "))
+            names_one |= strstr(line, f) != NULL;
+        if (!names_one)
+            fail_msg("%s\nnames none of the functions to write:%s", line, todo);
+        failed++;
+    }
+    if (failed == 0)
+        fail_msg("make test failed on the handout, but no test did:\n%s", r.output);
+    static char pointed[1024][256];
+    int n = pointed_tests(lesson, pointed, 1024);
+    for (int i = 0; i < n; i++) {
+        char want[300];
+        snprintf(want, sizeof want, "[  FAILED  ] %.255s\n", pointed[i]);
+        if (!strstr(r.output, want))
+            fail_msg("%s passes on the untouched handout of %s, yet tests/%s/points.txt gives it "
+                     "points: a student would get them for nothing", pointed[i], lesson, lesson);
+    }
+    shell_result_free(&r);
+}
+
+/* A title, then the lines of text (which begins with a newline), one print
+ * each: cmocka cuts a message at 1024 characters. */
+static void print_lines(const char *title, char *text)
+{
+    print_error("%s%s\n", title, text[0] ? "" : " none");
+    for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n"))
+        print_error("%s\n", line);
+}
+
+static void expect_mistake_caught(const char *h, const char *build, const Mistake *m,
+                                  const Grade *full)
+{
+    char path[PATH_MAX_LEN * 2];
+    snprintf(path, sizeof path, "%s/lessons/%s/%s", h, m->lesson, m->file);
+    char *text = read_text(path);
+    char *at = strstr(text, m->from);
+    if (!at || strstr(at + 1, m->from))
+        fail_msg("%s: \"%s\" should occur exactly once in lessons/%s/%s (update MISTAKES)",
+                 m->mistake, m->from, m->lesson, m->file);
+    size_t n = strlen(text) - strlen(m->from) + strlen(m->to) + 1;
+    char *broken = malloc(n);
+    assert_non_null(broken);
+    snprintf(broken, n, "%.*s%s%s", (int)(at - text), text, m->to, at + strlen(m->from));
+    write_text(path, broken);
+    ShellResult r = shell(h, "make %s grade LESSON=%.2s", make_opts, m->lesson);
+    write_text(path, text);
+    free(broken);
+    free(text);
+    if (r.status != 0)
+        fail_msg("make grade with %s: status %d\n%s", m->mistake, r.status, r.output);
+    shell_result_free(&r);
+
+    Grade g = read_grade(build);
+    double lost = 0;
+    /* Every difference from the list, and the tests that fail now, in one
+     * message: what to look at, or to copy into MISTAKES if the change was meant. */
+    char unexpected[8192] = "", missed[8192] = "", failing[16384] = "";
+    const JsonValue *tests = json_get(&g.json, "tests");
+    for (size_t i = 0; i < tests->count; i++) {
+        const JsonValue *t = &tests->items[i];
+        const char *name = strchr(json_get(t, "name")->string, ' ') + 1;
+        bool passed = strcmp(json_get(t, "status")->string, "passed") == 0;
+        bool listed = false;
+        for (int k = 0; m->caught_by[k]; k++)
+            listed |= strcmp(m->caught_by[k], name) == 0;
+        char *into = listed && passed ? missed : !listed && !passed ? unexpected : NULL;
+        if (into && strlen(into) + strlen(name) + 4 < sizeof unexpected)
+            strcat(strcat(into, "\n  "), name);
+        if (!passed && strlen(failing) + strlen(name) + 8 < sizeof failing)
+            strcat(strcat(strcat(failing, "\n      \""), name), "\",");
+        if (listed)
+            lost += json_get(t, "max_score")->number;
+    }
+    if (unexpected[0] || missed[0]) {
+        print_error("%s (%s, %s): the tests that catch it changed.\n", m->mistake, m->lesson,
+                    m->file);
+        print_lines("failed, and not in its list:", unexpected);
+        print_lines("in its list, and passed:", missed);
+        print_lines("the tests that fail now:", failing);
+        fail_msg("%s (%s): update MISTAKES with the tests that fail now (above), if the "
+                 "change was meant", m->mistake, m->lesson);
+    }
+    for (int k = 0; m->caught_by[k]; k++)
+        if (!grade_entry(&g, m->lesson, m->caught_by[k]))
+            fail_msg("%s: no test %s in lesson %s", m->mistake, m->caught_by[k], m->lesson);
+    if (lost <= 0 || g.score != full->score - lost)
+        fail_msg("%s: the score is %g, want %g - %g", m->mistake, g.score, full->score, lost);
+    json_free(&g.json);
+}
+
+/* What every handout compiles the same way (common/, tools/, tests/support/,
+ * from the same sources): copied from the first handout's build into the
+ * others, after they are written, so that make finds it up to date. */
+static char seed[PATH_MAX_LEN * 2];
+
+static void seed_build(const char *h)
+{
+    if (!seed[0]) {
+        snprintf(seed, sizeof seed, "%s/build", h);
+        return;
+    }
+    shell_ok(NULL,
+             "mkdir -p %s/build/obj/tests && cp -R %s/obj/common %s/obj/tools %s/build/obj/ && "
+             "cp -R %s/obj/tests/support %s/build/obj/tests/ && cp -R %s/tools %s/.deps-ok %s/build/",
+             h, seed, seed, h, seed, h, seed, seed, h);
+}
+
+static void handout_round_trip(void **state)
+{
+    const char *lesson = *state;
+    char base[PATH_MAX_LEN], h[PATH_MAX_LEN + 8], build[PATH_MAX_LEN + 16];
+    char name[300];
+    snprintf(name, sizeof name, "handout_%.250s", lesson);
+    abs_test_dir(name, base, sizeof base);
+    snprintf(h, sizeof h, "%s/h", base);
+    snprintf(build, sizeof build, "%s/build", h);
+
+    /* 1. The handout, alone. */
+    shell_ok(NULL, "sh scripts/handout.sh --only --dest %s %s", h, lesson);
+
+    /* 2. It builds; no solution line in it; its tests fail, with hints. */
+    seed_build(h);
+    shell_ok(h, "make %s", make_opts);
+    SolutionLines *s = solution_lines(lesson);
+    if (s->n == 0)
+        fail_msg("lessons/%s has no solution line: no region?", lesson);
+    int files = 0;
+    expect_no_solution_line(s, h, lesson, &files);
+    assert_true(files > 10);
+    free_solution_lines(s);
+    expect_tests_fail_with_hints(h, lesson);
+
+    /* 3. The solution put back: full marks, every test passed and in points.txt. */
+    shell_ok(NULL, "cp lessons/%s/* %s/lessons/%s/", lesson, h, lesson);
+    shell_ok(h, "make %s grade LESSON=%.2s", make_opts, lesson);
+    Grade full = read_grade(build);
+    if (full.max <= 0 || full.score != full.max)
+        fail_msg("make grade with the solution of %s: %g of %g points", lesson, full.score,
+                 full.max);
+    const JsonValue *tests = json_get(&full.json, "tests");
+    for (size_t i = 0; i < tests->count; i++) {
+        const JsonValue *t = &tests->items[i];
+        if (strcmp(json_get(t, "status")->string, "passed") != 0)
+            fail_msg("with the solution, %s failed:\n%s", json_get(t, "name")->string,
+                     json_get(t, "output")->string);
+        if (strstr(json_get(t, "output")->string, "points.txt: counts 0 points"))
+            fail_msg("%s is not in tests/%s/points.txt: every test should be",
+                     json_get(t, "name")->string, lesson);
+    }
+
+    /* 4. Each mistake of docs/teaching.md costs exactly its tests' points. */
+    const char *all = getenv("TEST_ALL_MISTAKES");
+    bool every_mistake = all && strcmp(all, "1") == 0;
+    for (size_t k = 0; k < sizeof MISTAKES / sizeof MISTAKES[0]; k++)
+        if (strcmp(MISTAKES[k].lesson, lesson) == 0 && (MISTAKES[k].every_run || every_mistake))
+            expect_mistake_caught(h, build, &MISTAKES[k], &full);
+    json_free(&full.json);
+}
+
+/* The exercises at the end of each lesson page: 3 to 5, from a warm-up to a
+ * challenge, and at least one names a test with points in the lesson's
+ * points file: a test the handout carries checks it. */
+static void exercises_go_from_warm_up_to_challenge_and_a_test_checks_one(void **state)
+{
+    const char *lesson = *state;
+    char page[PATH_MAX_LEN];
+    snprintf(page, sizeof page, "docs/%.200s.md", lesson);
+    char *text = read_text(page);
+    char *section = strstr(text, "\n## Exercises\n");
+    if (!section)
+        fail_msg("%s has no \"## Exercises\" section", page);
+    section += strlen("\n## Exercises\n");
+    char *end = strstr(section, "\n## ");
+    if (end)
+        *end = '\0';
+    static char pointed[1024][256];
+    int n_pointed = pointed_tests(lesson, pointed, 1024);
+    int items = 0;
+    bool first_is_warm_up = false, last_is_challenge = false, checked = false;
+    for (char *line = strtok(section, "\n"); line; line = strtok(NULL, "\n")) {
+        if (isdigit((unsigned char)line[0]) && strstr(line, ". ")) {
+            items++;
+            if (items == 1)
+                first_is_warm_up = strstr(line, "Warm-up") != NULL;
+            last_is_challenge = strstr(line, "Challenge") != NULL;
+        }
+        for (int i = 0; i < n_pointed; i++) {
+            char quoted[300];
+            snprintf(quoted, sizeof quoted, "`%.255s`", pointed[i]);
+            checked |= strstr(line, quoted) != NULL;
+        }
+    }
+    free(text);
+    if (items < 3 || items > 5)
+        fail_msg("%s has %d exercises; want 3 to 5", page, items);
+    if (!first_is_warm_up || !last_is_challenge)
+        fail_msg("%s: the first exercise should say \"Warm-up\" and the last \"Challenge\"", page);
+    if (!checked)
+        fail_msg("%s: no exercise names a test of tests/%s/points.txt (with points) that "
+                 "checks it", page, lesson);
+}
+
+static int compare_names(const void *a, const void *b)
+{
+    return strcmp(a, b);
+}
+
+int main(void)
+{
+    /* -O2 builds more slowly than -O0, but the lessons' tests (the benchmark
+     * workloads above all) run several times faster: the sum is smaller. */
+    snprintf(make_opts, sizeof make_opts, "OPT=-O2 -j2");
+
+    static char names[2 * MAX_LESSONS][300];
+    static char lessons[MAX_LESSONS][256];
+    struct CMUnitTest tests[2 * MAX_LESSONS];
+    int n = 0;
+    DIR *d = opendir("lessons");
+    if (!d) {
+        fprintf(stderr, "test_handout: run it from the top of the series\n");
+        return 1;
+    }
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL && n < MAX_LESSONS)
+        if (isdigit((unsigned char)e->d_name[0]) && isdigit((unsigned char)e->d_name[1]))
+            snprintf(lessons[n++], sizeof lessons[0], "%s", e->d_name);
+    closedir(d);
+    qsort(lessons, (size_t)n, sizeof lessons[0], compare_names);
+    for (int i = 0; i < n; i++) {
+        snprintf(names[i], sizeof names[0], "exercises_of_%.200s", lessons[i]);
+        tests[i] = (struct CMUnitTest){names[i],
+                                       exercises_go_from_warm_up_to_challenge_and_a_test_checks_one,
+                                       NULL, NULL, lessons[i]};
+        snprintf(names[n + i], sizeof names[0], "handout_round_trip_%.200s", lessons[i]);
+        tests[n + i] = (struct CMUnitTest){names[n + i], handout_round_trip, NULL, NULL, lessons[i]};
+    }
+    return _cmocka_run_group_tests("tools: make handout and make grade on every lesson", tests,
+                                   (size_t)(2 * n), NULL, NULL);
+}
