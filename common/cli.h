@@ -1,4 +1,4 @@
-/* cli.h: the command line every lesson shares (CONVENTIONS.md), and the way a
+/* cli.h: the command line every lesson shares (docs/conventions.md), and the way a
  * lesson adds flags of its own.
  *
  *   --out FILE.png  --width N  --height N

@@ -2,7 +2,7 @@
  *
  * Functions of common/ never print and never exit. They fill an Error and return
  * false; the lesson's main.c prints "<program>: error: <msg>" and picks the exit
- * status (CONVENTIONS.md: 2 for a usage error, 1 for a failure while running). */
+ * status (docs/conventions.md: 2 for a usage error, 1 for a failure while running). */
 #ifndef ERROR_H
 #define ERROR_H
 

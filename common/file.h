@@ -1,6 +1,6 @@
 /* file.h: writing a file all at once, or not at all.
  *
- * CONVENTIONS.md: a failed run never leaves a truncated file behind, and an
+ * docs/conventions.md: a failed run never leaves a truncated file behind, and an
  * existing file at that path keeps its bytes. So every output goes through an
  * AtomicFile: a temporary file in the same directory (so that rename(2) is
  * atomic), renamed over the target only after every byte was written and

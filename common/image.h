@@ -19,7 +19,7 @@
 
 #include "error.h"
 
-/* CONVENTIONS.md: images are 1 to 16384 pixels on a side. */
+/* docs/conventions.md: images are 1 to 16384 pixels on a side. */
 #define IMAGE_MAX_SIDE 16384
 
 typedef struct { uint8_t r, g, b; } Rgb;

@@ -10,7 +10,7 @@
  *          material Kd, else a fixed palette indexed by face. Background: a
  *          dark grey-blue, so that a black face still shows.
  *   id     face + 1 as a 24-bit big-endian number (R is the high byte);
- *          background black (CONVENTIONS.md).
+ *          background black (docs/conventions.md).
  *   depth  depth_to_grey (image.h) of the view depth d. */
 #ifndef SHADE_H
 #define SHADE_H

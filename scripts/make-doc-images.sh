@@ -47,3 +47,49 @@ OBJ
     1.5,0.5,10.5,6.5 1.5,0.5,11.8,0.3 11.8,0.3,10.5,6.5 1.5,0.5,0.3,7.7 0.3,7.7,10.5,6.5
 rm -rf "$tmp"
 echo "make-doc-images: 02_zbuffer done"
+
+# ---- 03_perspective_z: grazing with each rule and where the rules differ,
+# also on cubes and interpenetrate, the negated-w bug on cubes, and a torus
+# knot written as OBJ by tools/make_obj
+make -s BUILD="$build" "$build/bin/03_perspective_z" "$build/tools/make_obj"
+l03="$build/bin/03_perspective_z"
+size="--width 400 --height 300"
+"$l03" $size --out "$images/03_grazing.png" \
+       --compare-naive "$images/03_grazing_compare.png" >/dev/null
+"$l03" $size --depth-interp naive --out "$images/03_grazing_naive.png" >/dev/null
+"$l03" $size --scene cubes --out "$images/03_cubes.png" \
+       --compare-naive "$images/03_cubes_compare.png" >/dev/null
+"$l03" $size --scene interpenetrate --out "$images/03_interpenetrate.png" \
+       --compare-naive "$images/03_interpenetrate_compare.png" >/dev/null
+"$l03" $size --scene cubes --bug negated-w --out "$images/03_cubes_negated_w.png" >/dev/null
+tmp=$(mktemp -d)
+"$build/tools/make_obj" knot "$tmp/knot.obj" >/dev/null
+"$l03" --obj "$tmp/knot.obj" --out "$images/03_knot.png" >/dev/null
+rm -rf "$tmp"
+echo "make-doc-images: 03_perspective_z done"
+
+# ---- 04_scanline_inverse_z: the walls, their depth shading, and De Goes'
+# two z-buffers on an 8 x 3 screen, magnified with the triangle's true edges.
+# Camera at the origin looking down -Z, fovy 90: screen (x_s, y_s) at depth d
+# is world x = (x_s / 4 - 1) * d * 8/3, y = (1 - y_s / 1.5) * d.
+make -s BUILD="$build" "$build/bin/04_scanline_inverse_z" "$build/tools/magnify"
+l04="$build/bin/04_scanline_inverse_z"
+"$l04" --out "$images/04_walls.png" >/dev/null
+"$l04" --shade depth --out "$images/04_walls_depth.png" >/dev/null
+tmp=$(mktemp -d)
+cat >"$tmp/two_buffers.obj" <<'OBJ'
+v 0 5 -5
+v 13.333333333333334 -5 -5
+v -13.333333333333334 -5 -5
+v -16 6 -6
+v 16 6 -6
+v 16 -6 -6
+v -16 -6 -6
+f 1 2 3
+f 4 5 6 7
+OBJ
+"$l04" --obj "$tmp/two_buffers.obj" --eye 0,0,0 --target 0,0,-1 --up 0,1,0 --fovy 90 --near 1 \
+       --far 10 --width 8 --height 3 --out "$tmp/two_buffers.png" >/dev/null
+"$build/tools/magnify" "$tmp/two_buffers.png" "$images/04_spans.png" 48 4,0,8,3 8,3,0,3 0,3,4,0
+rm -rf "$tmp"
+echo "make-doc-images: 04_scanline_inverse_z done"

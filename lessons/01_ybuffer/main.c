@@ -44,17 +44,24 @@ static const LessonCli CLI = {
     .defaults = {.out = "out/01_ybuffer.png", .width = 800, .height = 16},
 };
 
+#define PATH_MAX_TEXT 4096 /* room for the path of the diff picture of --compare */
+
 /* What --trace and --ascii show: the y-buffer keeps y, and larger is nearer. */
 static const DepthRule Y_RULE = {"y-buffer", "y", "segment", LARGER_IS_NEARER};
 
-/* Two outputs with one name would overwrite each other; none may replace the input. */
+/* Two outputs with one name would overwrite each other; none may replace an
+ * input (--segments, --compare). The diff picture of --compare is an output. */
 static bool check_outputs(const Options *opt, Error *err)
 {
-    const char *name[] = {"--out", "--scene-out", "--ybuffer-out", "--segments"};
-    const char *path[] = {opt->out, opt->extra[FLAG_SCENE_OUT], opt->extra[FLAG_YBUFFER_OUT],
-                          opt->extra[FLAG_SEGMENTS]};
-    for (int i = 0; i < 3; i++)
-        for (int j = i + 1; j < 4; j++) {
+    enum { OUTPUTS = 4, PATHS = 6 };
+    char diff[PATH_MAX_TEXT];
+    bool has_diff = opt->compare && compare_diff_path(opt->out, diff, sizeof diff);
+    const char *name[PATHS] = {"--out", "--scene-out", "--ybuffer-out",
+                               "the diff picture of --out", "--segments", "--compare"};
+    const char *path[PATHS] = {opt->out, opt->extra[FLAG_SCENE_OUT], opt->extra[FLAG_YBUFFER_OUT],
+                               has_diff ? diff : NULL, opt->extra[FLAG_SEGMENTS], opt->compare};
+    for (int i = 0; i < OUTPUTS; i++)
+        for (int j = i + 1; j < PATHS; j++) {
             if (!path[i] || !path[j])
                 continue;
             if (strcmp(path[i], path[j]) == 0 || same_file(path[i], path[j]))

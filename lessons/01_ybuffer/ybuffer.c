@@ -32,7 +32,13 @@ void ybuffer_free(YBuffer *yb)
 void clear_ybuffer(YBuffer *yb)
 {
     for (int x = 0; x < yb->width; x++) {
+        /* SOLUTION BEGIN: the value every column starts at: a y that any segment
+         * is nearer than, so that the first segment drawn always wins. */
         yb->y[x] = YBUFFER_CLEARED; /* any segment is nearer than this */
+        /* SOLUTION STUB
+        yb->y[x] = 0;
+        */
+        /* SOLUTION END */
         yb->owner[x] = NO_SEGMENT;
     }
     yb->stats = (FragmentStats){0, 0, 0};
@@ -65,6 +71,10 @@ int64_t round_half_up(int64_t p, int64_t q)
 
 int segment_y_at(const Segment *s, int x)
 {
+    /* SOLUTION BEGIN: the segment's y at column x: interpolate linearly
+     * between its ends, y = y0 + (y1 - y0) (x - x0) / (x1 - x0), rounded
+     * halves up with round_half_up; a vertical segment shows its nearest
+     * point, max(y0, y1). */
     if (s->x0 == s->x1) /* seen from above, a vertical segment shows its nearest point */
         return s->y0 > s->y1 ? s->y0 : s->y1;
     /* Take the left end as (x0, y0), so that the denominator x1 - x0 is positive. */
@@ -78,6 +88,11 @@ int segment_y_at(const Segment *s, int x)
     int64_t num = (int64_t)(yr - yl) * (int64_t)(x - xl);
     int64_t den = (int64_t)xr - xl;
     return yl + (int)round_half_up(num, den);
+    /* SOLUTION STUB
+    (void)x;
+    return s->y0;
+    */
+    /* SOLUTION END */
 }
 
 /* Counts the test, and logs it when x is the traced column (--trace): what
@@ -108,9 +123,12 @@ void draw_segment(YBuffer *yb, const Segment *s, int index)
         int y = segment_y_at(s, x);            /* where the segment is in this column */
         bool nearer = depth_test(y, yb->y[x]); /* nearer than all seen here so far? */
         record_test(yb, x, index, y, nearer);  /* counted, and logged for --trace */
+        /* SOLUTION BEGIN: where the depth test passes, the column keeps this
+         * segment: its y, and its index as the owner (which gives the colour). */
         if (nearer) {
             yb->y[x] = y;                      /* keep its y, */
             yb->owner[x] = index;              /* and the column takes its colour */
         }
+        /* SOLUTION END */
     }
 }

@@ -72,7 +72,16 @@ int segment_y_at(const Segment *s, int x);
  * tie keeps what was drawn first. */
 static inline bool depth_test(int y, int stored)
 {
+    /* SOLUTION BEGIN: the depth test: does a segment at y hide what the
+     * column holds (stored)? A larger y is nearer; a tie keeps what was
+     * drawn first. */
     return y > stored;
+    /* SOLUTION STUB
+    (void)y;
+    (void)stored;
+    return false;
+    */
+    /* SOLUTION END */
 }
 
 /* Step 4: walk the segment over every column from its left end to its right

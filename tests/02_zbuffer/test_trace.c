@@ -1,6 +1,6 @@
 /* test_trace.c: lesson 02's --trace names the face the picture shows, on 1000
  * random pixels (tests/shared/trace_suite.inc). Lesson 02 keeps view depth d,
- * smaller is nearer (CONVENTIONS.md). */
+ * smaller is nearer (docs/conventions.md). */
 #include "raster.h"
 
 #define TRACE_RASTERIZER ZBUFFER

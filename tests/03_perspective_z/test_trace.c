@@ -1,6 +1,6 @@
 /* test_trace.c: lesson 03's --trace names the face the picture shows, on 1000
  * random pixels (tests/shared/trace_suite.inc). Lesson 03 keeps view depth d,
- * smaller is nearer, as lesson 02 does (CONVENTIONS.md); only the way d is
+ * smaller is nearer, as lesson 02 does (docs/conventions.md); only the way d is
  * interpolated changed. */
 #include "raster.h"
 

@@ -129,7 +129,7 @@ static RunResult render_square(const char *obj, const char *out, const char *dep
     return run_program(PROGRAM, args);
 }
 
-/* --depth-out holds view depth d (CONVENTIONS.md), not the 1/d the buffer
+/* --depth-out holds view depth d (docs/conventions.md), not the 1/d the buffer
  * stores: 5 on the square, +infinity around it. */
 static void depth_out_writes_view_depth_not_its_inverse(void **state)
 {

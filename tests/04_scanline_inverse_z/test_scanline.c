@@ -625,7 +625,7 @@ static void face_not_convex_on_screen_falls_back_to_triangles(void **state)
 
 /* ---- coverage equals the edge-function rule of lessons 02 and 03 -------- */
 
-/* The reference, written here from CONVENTIONS.md: pixel centre P is inside a
+/* The reference, written here from docs/conventions.md: pixel centre P is inside a
  * convex polygon when every edge function E = (b - a) x (P - a), signed for
  * the winding, is > 0, or = 0 on a top edge or a left edge. In integers of
  * 1/256 pixel, as the GPUs' rule is exact. */

@@ -1,6 +1,6 @@
 /* test_trace.c: lesson 04's --trace names the face the picture shows, on 1000
  * random pixels (tests/shared/trace_suite.inc). Lesson 04 keeps 1/d, larger is
- * nearer (CONVENTIONS.md), and the trace prints what the buffer holds. */
+ * nearer (docs/conventions.md), and the trace prints what the buffer holds. */
 #include "scanline.h"
 
 #define TRACE_RASTERIZER SCANLINE_ZBUFFER

@@ -1,8 +1,8 @@
 /* test_ascii.c: --ascii prints the depth buffer as digits.
  *
- * First the two 8x3 z-buffers of the 1990s z-buffer text the series starts
- * from (seed 004), drawn by the lessons themselves: a triangle facing the
- * camera at d = 5, alone,
+ * First the two 8x3 z-buffers of John De Goes' 1990s text on the Z-buffer,
+ * where the series starts, drawn by the lessons themselves: a triangle facing
+ * the camera at d = 5, alone,
  *
  *     ...55...
  *     ..5555..
@@ -14,7 +14,7 @@
  *     66555566
  *     65555556
  *
- * (the seed leaves the empty pixels blank; --ascii prints '.').
+ * (the text leaves the empty pixels blank; --ascii prints '.').
  *
  * The scene, derived by hand: the camera at the origin looks down -Z, up +Y,
  * fovy = 2 atan(0.6), on an 8x3 image (aspect 8/3). Then f = 1/tan(fovy/2) = 5/3
@@ -24,12 +24,12 @@
  * At d = 5: x_s = 4 + X/2, y_s = 3/2 - Y/2. The triangle (0,4,-5), (-8,-4,-5),
  * (8,-4,-5) lands on (4,-0.5), (0,3.5), (8,3.5): at the pixel centres' rows
  * y = 0.5, 1.5, 2.5 it spans 3..5, 2..6, 1..7, and covers the centres
- * 3.5..4.5, 2.5..5.5, 1.5..6.5, exactly the seed's pixels (no centre lies on
+ * 3.5..4.5, 2.5..5.5, 1.5..6.5, exactly the text's pixels (no centre lies on
  * an edge: each is half a pixel away). The quad at d = 6 has corners at X, Y = ±20,
  * i.e. x_s = 4 ± 8.3, y_s = 1.5 ± 8.3: far beyond the screen on every side.
  *
  * Lessons 02 and 03 store d: the values are the whole numbers 5 and 6, so the
- * maps print exactly as the seed's. Lesson 04 stores 1/d: 0.2 and 0.1667 are not
+ * maps print exactly as the text's. Lesson 04 stores 1/d: 0.2 and 0.1667 are not
  * whole numbers, so they are printed in ten steps, nearest (largest 1/d,
  * the d = 5 triangle) as 0 and farthest (the d = 6 quad) as 9: the same shapes
  * with 0 for 5 and 9 for 6. docs/tools.md shows both.
@@ -89,12 +89,12 @@ static const char *ascii_part(const char *out, const char *legend_start, char *l
     return eol + 1;
 }
 
-static void expect_seed_map(const char *lesson, const char *obj_text, const char *legend_want,
+static void expect_text_map(const char *lesson, const char *obj_text, const char *legend_want,
                             const char *rows_want)
 {
     const char *dir = test_dir("tools_ascii");
-    const char *obj = write_text(dir, "seed.obj", obj_text);
-    const char *args[] = {"--obj", obj, "--out", path_join(dir, "seed.png"), "--width", "8",
+    const char *obj = write_text(dir, "map.obj", obj_text);
+    const char *args[] = {"--obj", obj, "--out", path_join(dir, "map.png"), "--width", "8",
                           "--height", "3", "--eye", "0,0,0", "--target", "0,0,-1", "--up",
                           "0,1,0", "--fovy", FOVY_TAN_06, "--near", "1", "--far", "100",
                           "--ascii", NULL};
@@ -112,27 +112,27 @@ static void expect_seed_map(const char *lesson, const char *obj_text, const char
 #define LEGEND_AS_IS \
     "depth buffer 8x3, digit = d itself (all values are whole numbers 0-9); '.' = empty"
 
-static void seed_maps_print_as_the_seed_draws_them_storing_d(void **state)
+static void maps_print_as_the_zbuffer_text_draws_them_storing_d(void **state)
 {
     (void)state;
     static const char *const LESSONS[] = {"02_zbuffer", "03_perspective_z"};
     for (int i = 0; i < 2; i++) {
-        expect_seed_map(LESSONS[i], TRIANGLE_AT_5, LEGEND_AS_IS, "...55...\n..5555..\n.555555.\n");
-        expect_seed_map(LESSONS[i], TRIANGLE_AT_5_QUAD_AT_6, LEGEND_AS_IS,
+        expect_text_map(LESSONS[i], TRIANGLE_AT_5, LEGEND_AS_IS, "...55...\n..5555..\n.555555.\n");
+        expect_text_map(LESSONS[i], TRIANGLE_AT_5_QUAD_AT_6, LEGEND_AS_IS,
                         "66655666\n66555566\n65555556\n");
     }
 }
 
-static void seed_maps_print_stored_inverse_d_nearest_as_0(void **state)
+static void text_maps_print_stored_inverse_d_nearest_as_0(void **state)
 {
     (void)state;
     /* One value only (1/d = 0.2 everywhere): the range is empty, every pixel is step 0. */
-    expect_seed_map("04_scanline_inverse_z", TRIANGLE_AT_5,
+    expect_text_map("04_scanline_inverse_z", TRIANGLE_AT_5,
                     "depth buffer 8x3, stored 1/d in ten steps: 0 = nearest (1/d=0.2) .. "
                     "9 = farthest (1/d=0.2)",
                     "...00...\n..0000..\n.000000.\n");
     /* 1/5 nearest is 0, 1/6 farthest is 9. */
-    expect_seed_map("04_scanline_inverse_z", TRIANGLE_AT_5_QUAD_AT_6,
+    expect_text_map("04_scanline_inverse_z", TRIANGLE_AT_5_QUAD_AT_6,
                     "depth buffer 8x3, stored 1/d in ten steps: 0 = nearest (1/d=0.2) .. "
                     "9 = farthest (1/d=0.16666",
                     "99900999\n99000099\n90000009\n");
@@ -265,8 +265,8 @@ static void larger_than_120x60_is_refused_with_the_size(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(seed_maps_print_as_the_seed_draws_them_storing_d),
-        cmocka_unit_test(seed_maps_print_stored_inverse_d_nearest_as_0),
+        cmocka_unit_test(maps_print_as_the_zbuffer_text_draws_them_storing_d),
+        cmocka_unit_test(text_maps_print_stored_inverse_d_nearest_as_0),
         cmocka_unit_test(ybuffer_row_prints_y_itself_or_in_ten_steps_largest_nearest),
         cmocka_unit_test(steps_are_tenths_of_the_range_nearest_first),
         cmocka_unit_test(larger_is_nearer_reverses_the_digits),
