@@ -4,9 +4,9 @@
  * through the z-buffer with 1/d interpolated on the screen (raster.c), write
  * the pictures and report.
  * --depth-interp naive draws with lesson 02's rule instead; --compare-naive
- * draws with both and marks where they disagree (compare_naive.c); --bug negated-w
- * makes a classic mistake on purpose (bugs.c); --trace, --ascii, --compare and
- * --steps watch the depth test decide (common/inspect.h). */
+ * draws with both and marks where they disagree (common/compare_naive.c);
+ * --bug negated-w makes a classic mistake on purpose (bugs.c); --trace,
+ * --ascii, --compare and --steps watch the depth test decide (common/inspect.h). */
 #include <stdio.h>
 #include <string.h>
 
@@ -102,7 +102,8 @@ int main(int argc, char **argv)
               inspect_begin(&ins, &r, &t, rz, rule, &opt, &err) &&             /* watch */
               render_faces(&r, &t, rz, NULL, 0, inspect_after_face, &ins, &err) && /* draw */
               render_write(&r, &t, rz, &opt, &err) &&                        /* write */
-              (!compare || compare_with_naive(&r, &opt, compare, &differing, &err));
+              (!compare || compare_with_naive(&r, &opt, &ZBUFFER, &ZBUFFER_NAIVE, compare,
+                                              &differing, &err));
     if (ok) {
         render_print_summary(stdout, &r, &t, rz, &opt);                      /* report */
         if (METHOD_NOTE[method])

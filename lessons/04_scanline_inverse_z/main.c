@@ -6,7 +6,7 @@
  * centre of the screen ("front object detection").
  * Lesson 03's flags work here too: --depth-interp naive steps d instead of
  * 1/d; --compare-naive draws with both and marks where they disagree
- * (compare_naive.c); --trace, --ascii, --compare and --steps watch the depth
+ * (common/compare_naive.c); --trace, --ascii, --compare and --steps watch the depth
  * test decide (common/inspect.h), speaking of 1/d as the buffer holds it. */
 #include <math.h>
 #include <stdio.h>
@@ -92,7 +92,8 @@ int main(int argc, char **argv)
         ok = inspect_begin(&ins, &r, &t, rz, &INVERSE_DEPTH, &opt, &err) &&   /* watch */
              render_faces(&r, &t, rz, NULL, 0, inspect_after_face, &ins, &err) && /* draw */
              render_write(&r, &t, rz, &opt, &err) &&                     /* write */
-             (!compare || compare_with_naive(&r, &opt, compare, &differing, &err));
+             (!compare || compare_with_naive(&r, &opt, &SCANLINE_ZBUFFER,
+                                             &SCANLINE_ZBUFFER_NAIVE, compare, &differing, &err));
     }
     if (ok) {
         render_print_summary(stdout, &r, &t, rz, &opt);                  /* report */

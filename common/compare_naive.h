@@ -1,7 +1,8 @@
 /* compare_naive.h: where the naive rule goes wrong (--compare-naive FILE.png).
  *
- * The scene is drawn twice, once with each rule (ZBUFFER and ZBUFFER_NAIVE),
- * and the picture of the right one is written with every pixel where the
+ * Lessons 03 and 04 each give two rasterizers: the right one, which takes 1/d
+ * to be linear on the screen, and the naive one, which takes d to be (lesson
+ * 02's rule). The scene is drawn twice, once with each, and the picture of the right one is written with every pixel where the
  * naive rule shows another face (or a face where there is none, or none
  * where there is one) marked in NAIVE_MARK; every other pixel keeps its
  * colour at half brightness. */
@@ -17,11 +18,11 @@ extern const Rgb NAIVE_MARK; /* magenta */
  * with err set when path names one of them, a usage error. */
 bool compare_naive_path_ok(const Options *opt, const char *path, Error *err);
 
-/* Draws r with both rules, writes the picture to path (colours as opt->shade
+/* Draws r with both rasterizers, writes the picture to path (colours as opt->shade
  * says) and counts the marked pixels into *differing. r's face counts are
  * left as they were, so that the summary speaks of the main render only.
  * False (err set) when out of memory or the picture cannot be written. */
-bool compare_with_naive(Render *r, const Options *opt, const char *path, long *differing,
-                        Error *err);
+bool compare_with_naive(Render *r, const Options *opt, const Rasterizer *right,
+                        const Rasterizer *naive, const char *path, long *differing, Error *err);
 
 #endif

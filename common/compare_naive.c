@@ -5,7 +5,6 @@
 
 #include "compare.h"
 #include "file.h"
-#include "scanline.h"
 
 #define AGREED_DIM 2       /* pixels both rules agree on are shown at half brightness */
 #define DIFF_PATH_MAX 4096 /* room for the path of the diff picture of --compare */
@@ -55,22 +54,21 @@ static long mark_differences(const Target *right, const Target *naive, Image *im
     return differing;
 }
 
-bool compare_with_naive(Render *r, const Options *opt, const char *path, long *differing,
-                        Error *err)
+bool compare_with_naive(Render *r, const Options *opt, const Rasterizer *right,
+                        const Rasterizer *naive, const char *path, long *differing, Error *err)
 {
     FaceCounts counts = r->counts; /* render_faces adds to them: restored below */
-    Target right = {0}, naive = {0};
+    Target with_right = {0}, with_naive = {0};
     Image im = {0};
-    bool ok = draw_with(r, &SCANLINE_ZBUFFER, &right, err) &&
-              draw_with(r, &SCANLINE_ZBUFFER_NAIVE, &naive, err) &&
-              render_image(r, &right, &SCANLINE_ZBUFFER, opt->shade, &im, err);
+    bool ok = draw_with(r, right, &with_right, err) && draw_with(r, naive, &with_naive, err) &&
+              render_image(r, &with_right, right, opt->shade, &im, err);
     if (ok) {
-        *differing = mark_differences(&right, &naive, &im);
+        *differing = mark_differences(&with_right, &with_naive, &im);
         ok = render_make_parent_dirs(path, err) && image_write_png(&im, path, err);
     }
     image_free(&im);
-    target_free(&right);
-    target_free(&naive);
+    target_free(&with_right);
+    target_free(&with_naive);
     r->counts = counts;
     return ok;
 }
