@@ -63,11 +63,11 @@ $(BUILD)/obj/%.o: %.c | $(DEPS_OK)
 	$(CC) $(CPPFLAGS) $(CFLAGS) $(STB_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
 
 # The objects of lesson $(1) that its tests may link: all of it but main.c.
-lesson_objs = $(patsubst %.c,$(BUILD)/obj/%.o,$(filter-out %/main.c,$(wildcard lessons/$(1)/*.c)))
+lesson_objs = $(patsubst %.c,$(BUILD)/obj/%.o,$(filter-out %/main.c,$(wildcard lessons/$(1)/*.c lessons/$(1)/extras/*.c)))
 
 # All objects of lesson $(1), main.c included. (A call, not a literal patsubst
 # in the rule: make would put the stem in place of the patsubst's own %.)
-lesson_all_objs = $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard lessons/$(1)/*.c))
+lesson_all_objs = $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard lessons/$(1)/*.c lessons/$(1)/extras/*.c))
 
 .SECONDEXPANSION:
 $(BUILD)/bin/%: $$(call lesson_all_objs,$$*) $(COMMON_OBJ)
@@ -86,8 +86,14 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(COMMON_OBJ) $(SUPPORT_OBJ) \
 	@mkdir -p $(@D)
 	$(CC) $(CFLAGS) $(LDFLAGS) $^ -o $@ $(CMOCKA_LIBS) $(STB_LIBS) $(LDLIBS)
 
-# Tests include their lesson's headers as "raster.h" etc.
-$(BUILD)/obj/tests/%.o: CPPFLAGS += -Itests/support -Ilessons/$(notdir $(patsubst %/,%,$(dir $*)))
+# A lesson's extras/ include its taught header as "raster.h", as its own files do.
+# ($* is the stem of the compile rule, lessons/NN_name/...)
+$(BUILD)/obj/lessons/%.o: CPPFLAGS += -I$(word 1,$(subst /, ,$*))/$(word 2,$(subst /, ,$*))
+
+# Tests include their lesson's headers as "raster.h", and its extras' as "bugs.h".
+test_lesson_dir = lessons/$(notdir $(patsubst %/,%,$(dir $(1))))
+$(BUILD)/obj/tests/%.o: CPPFLAGS += -Itests/support -I$(call test_lesson_dir,$*) \
+                                    -I$(call test_lesson_dir,$*)/extras
 $(BUILD)/obj/tools/%.o: CPPFLAGS += -Itests/support
 
 run: $(BINS)
@@ -219,7 +225,7 @@ BENCH_TABLE   := 02_zbuffer=ZBUFFER 03_perspective_z=ZBUFFER \
 BENCH_TABLE   := $(filter $(LESSONS:%=%=%),$(BENCH_TABLE))
 BENCH_LESSONS := $(foreach e,$(BENCH_TABLE),$(firstword $(subst =, ,$(e))))
 bench_rasterizer = $(lastword $(subst =, ,$(filter $(1)=%,$(BENCH_TABLE))))
-bench_lesson_objs = $(patsubst %.c,$(BENCH_DIR)/obj/%.o,$(filter-out %/main.c,$(wildcard lessons/$(1)/*.c)))
+bench_lesson_objs = $(patsubst %.c,$(BENCH_DIR)/obj/%.o,$(filter-out %/main.c,$(wildcard lessons/$(1)/*.c lessons/$(1)/extras/*.c)))
 BENCH_SUPPORT := $(patsubst %.c,$(BENCH_DIR)/obj/%.o,$(wildcard common/*.c) \
                    tests/bench/workloads.c tests/bench/measure.c)
 BENCH_BINS    := $(BENCH_DIR)/bench_limit $(BENCH_LESSONS:%=$(BENCH_DIR)/bench_%)

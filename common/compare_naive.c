@@ -33,7 +33,7 @@ bool compare_naive_path_ok(const Options *opt, const char *path, Error *err)
 
 static bool draw_with(Render *r, const Rasterizer *rz, Target *t, Error *err)
 {
-    return target_init(t, r->camera.width, r->camera.height, rz->clear_value, err) &&
+    return render_target_init(t, rz, r->camera.width, r->camera.height, err) &&
            render_faces(r, t, rz, NULL, 0, NULL, NULL, err);
 }
 

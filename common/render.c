@@ -110,8 +110,17 @@ int render_load(Render *r, Options *opt, Error *err)
 ScreenFace render_screen_face(const Render *r, int i)
 {
     const Face *f = &r->mesh.faces[i];
-    ScreenFace sf = {i, f->count, r->corners + f->first, r->mesh.tris + f->first_tri, f->convex};
+    ScreenFace sf = {.face = i, .n = f->count, .v = r->corners + f->first,
+                     .tris = r->mesh.tris + f->first_tri, .convex = f->convex};
     return sf;
+}
+
+bool render_target_init(Target *t, const Rasterizer *rz, int width, int height, Error *err)
+{
+    if (!target_init(t, width, height, err))
+        return false;
+    rz->clear(t);
+    return true;
 }
 
 typedef enum { KEEP, BEHIND_NEAR, NOT_FINITE } DropReason;
@@ -144,7 +153,7 @@ bool render_face_dropped(const Render *r, int i)
 bool render_faces(Render *r, Target *t, const Rasterizer *rz, const int *order, int count,
                   FaceDrawnFn after_face, void *data, Error *err)
 {
-    DrawContext ctx = {r->camera.near, r->camera.far};
+    DrawContext ctx = {.near = r->camera.near, .far = r->camera.far};
     int n = order ? count : r->mesh.nfaces;
     for (int k = 0; k < n; k++) {
         int i = order ? order[k] : k;
@@ -264,12 +273,12 @@ void render_print_warnings(const Render *r, const char *program)
         fprintf(stderr, "%s: warning: %s\n", program, r->mesh.warnings[i]);
 }
 
-void render_print_summary(FILE *out, const Render *r, const Target *t, const Rasterizer *rz,
+void render_print_summary(FILE *out, const char *program, const Render *r, const Target *t,
                           const Options *opt)
 {
     const FaceCounts *c = &r->counts;
     fprintf(out, "%s: %s (%d face%s): %d triangle%s drawn, %d dropped at the near plane",
-            rz->program, r->source, r->mesh.nfaces, r->mesh.nfaces == 1 ? "" : "s",
+            program, r->source, r->mesh.nfaces, r->mesh.nfaces == 1 ? "" : "s",
             c->tris_drawn, c->tris_drawn == 1 ? "" : "s", c->tris_behind_near);
     if (c->tris_not_finite)
         fprintf(out, ", %d dropped with screen positions too large to represent",
@@ -352,6 +361,6 @@ SceneInfo render_fit_camera(const Mesh *m, int width, int height)
 ScreenFace screen_triangle(const ScreenVertex v[3], int face)
 {
     static const Tri first = {{0, 1, 2}};
-    ScreenFace f = {face, 3, v, &first, true};
+    ScreenFace f = {.face = face, .n = 3, .v = v, .tris = &first, .convex = true};
     return f;
 }

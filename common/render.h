@@ -1,9 +1,7 @@
 /* render.h: everything around a rasterizer that a lesson does not teach.
  *
- * A lesson of the 3-D series (02 on) teaches one thing: how a face becomes
- * pixels and which pixel keeps which face. It describes that in a Rasterizer
- * (its depth buffer's clear value, its draw_face, and how to read its buffer
- * back as view depth); this file does the rest:
+ * A lesson of the 3-D series (02 on) describes its depth buffer in a
+ * Rasterizer (rasterizer.h); this file does the rest:
  *
  *   render_load     the scene (--scene) or OBJ file (--obj), the camera, and
  *                   every face corner projected to the screen once
@@ -17,14 +15,7 @@
  *                   directories of the outputs are created when missing
  *   render_print_summary   what was drawn, what the depth test did
  *
- * So a lesson's main.c reads as its outline:
- *
- *     status = cli_parse(&cli, argc, argv, &opt);            parse
- *     status = render_load(&r, &opt, &err);                  set up
- *     target_init(&t, opt.width, opt.height, RZ.clear_value, &err);   clear
- *     render_faces(&r, &t, &RZ, NULL, 0, NULL, NULL, &err);  draw
- *     render_write(&r, &t, &RZ, &opt, &err);                 write
- *     render_print_summary(stdout, &r, &t, &RZ, &opt);       report
+ * A lesson's main.c calls them through lesson.h.
  *
  * Framing of --obj: the mesh is framed by a camera fitted to its bounds (see
  * render_fit_camera); camera flags given on the command line still win. */
@@ -39,39 +30,11 @@
 #include "error.h"
 #include "image.h"
 #include "mesh.h"
+#include "rasterizer.h"
 #include "scene.h"
 #include "target.h"
 
 #define RENDER_SOURCE_MAX 256
-
-/* One face as the rasterizer sees it: every pointer stays valid while the
- * lesson's draw_face runs (and no longer). */
-typedef struct {
-    int face;               /* index of the face in the mesh: --shade id shows face + 1 */
-    int n;                  /* number of corners, >= 3 */
-    const ScreenVertex *v;  /* its n corners on the screen (x, y in pixels, view depth d) */
-    const Tri *tris;        /* its n - 2 triangles, as corner numbers into v */
-    bool convex;            /* a convex polygon: may be drawn whole (lesson 04) */
-} ScreenFace;
-
-/* What draw_face needs besides the target and the face. */
-typedef struct {
-    double near, far; /* the camera's planes: a fragment with d > far is discarded
-                         before its depth test (and not counted as tested) */
-} DrawContext;
-
-/* The one thing each lesson writes: how to draw a face and what its depth
- * buffer holds. Lessons 02 and 03 store d, clear to +infinity and keep d < stored;
- * lesson 04 stores 1/d, clears to 0 and keeps 1/d > stored. */
-typedef struct {
-    const char *program;   /* "02_zbuffer": the summary starts with it */
-    float clear_value;     /* what the depth buffer holds before anything is drawn */
-    void (*draw_face)(Target *t, const ScreenFace *f, const DrawContext *ctx);
-    /* A stored value back as view depth d, for --depth-out and --shade depth.
-     * NULL when the buffer already holds d. Pixels no face won (face[] ==
-     * NO_FACE) are written as +infinity whatever they hold. */
-    double (*stored_to_depth)(float stored);
-} Rasterizer;
 
 typedef struct {
     int faces_drawn, tris_drawn;               /* handed to draw_face */
@@ -139,6 +102,9 @@ bool render_make_parent_dirs(const char *path, Error *err);
 /* "<program>: warning: <msg>" on stderr for each mesh warning. */
 void render_print_warnings(const Render *r, const char *program);
 
+/* A target of width x height, cleared by rz->clear: for tools and tests. */
+bool render_target_init(Target *t, const Rasterizer *rz, int width, int height, Error *err);
+
 /* The summary, e.g.
  *   02_zbuffer: scene triangles3 (3 faces): 3 triangles drawn, 0 dropped at the near plane
  *     fragments: 51234 tested, 40000 passed, 11234 failed; average overdraw 1.21 over
@@ -146,7 +112,7 @@ void render_print_warnings(const Render *r, const char *program);
  *     wrote out/02_zbuffer.png
  * One "wrote" line per file written; ", N dropped off the number line" is added
  * when screen positions overflowed. */
-void render_print_summary(FILE *out, const Render *r, const Target *t, const Rasterizer *rz,
+void render_print_summary(FILE *out, const char *program, const Render *r, const Target *t,
                           const Options *opt);
 
 /* The camera --obj gets unless flags say otherwise: fovy 40, up +Y, looking at
@@ -154,14 +120,5 @@ void render_print_summary(FILE *out, const Render *r, const Target *t, const Ras
  * right and above (along +Z, as OBJ models usually face), far enough that
  * the bounding sphere fits the view; near and far enclose the sphere. */
 SceneInfo render_fit_camera(const Mesh *m, int width, int height);
-
-/* True when every corner of f (x, y and d) is a finite number. A corner that
- * is NaN or infinite has no place on the screen: render_faces drops such a
- * face, and a lesson's draw_face refuses one too, rather than trust that its
- * caller did. */
-bool screen_face_is_finite(const ScreenFace *f);
-
-/* A one-triangle ScreenFace over v[0..2], for tests and tools. */
-ScreenFace screen_triangle(const ScreenVertex v[3], int face);
 
 #endif

@@ -15,7 +15,7 @@
 extern inline void target_record(Target *t, size_t i, int face, float value, float stored,
                                  bool passed);
 
-bool target_init(Target *t, int width, int height, float clear_value, Error *err)
+bool target_init(Target *t, int width, int height, Error *err)
 {
     Target empty = {0};
     *t = empty;
@@ -31,8 +31,8 @@ bool target_init(Target *t, int width, int height, float clear_value, Error *err
         n > SIZE_MAX / sizeof(uint32_t))
         return error_set(err, "image size %dx%d is too large for this machine", width, height);
 
-    t->depth = malloc(n * sizeof *t->depth);
-    t->face = malloc(n * sizeof *t->face);
+    t->depth = calloc(n, sizeof *t->depth);
+    t->face = calloc(n, sizeof *t->face);
     t->overdraw = calloc(n, sizeof *t->overdraw);
     if (!t->depth || !t->face || !t->overdraw) {
         target_free(t);
@@ -40,10 +40,6 @@ bool target_init(Target *t, int width, int height, float clear_value, Error *err
     }
     t->width = width;
     t->height = height;
-    for (size_t i = 0; i < n; i++) {
-        t->depth[i] = clear_value;
-        t->face[i] = NO_FACE;
-    }
     return true;
 }
 

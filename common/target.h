@@ -1,7 +1,8 @@
 /* target.h: what a lesson draws into, passed explicitly (no globals).
  *
  * depth[]    the value the lesson's depth test keeps per pixel: view depth d in
- *            lessons 02 and 03, 1/d in lesson 04. The lesson clears it.
+ *            lessons 02 and 03, 1/d in lesson 04. The lesson clears it
+ *            (clear_depth), and face[] with it.
  * face[]     the face that won each pixel, NO_FACE where nothing was drawn.
  *            Colours are resolved from it after drawing (shade.h), so the
  *            rasterizer writes one integer per pixel and no colour.
@@ -17,27 +18,9 @@
 #include <stdint.h>
 
 #include "error.h"
+#include "fragments.h"
 
 #define NO_FACE (-1)
-
-typedef struct {
-    uint64_t tested, passed, failed;
-} FragmentStats;
-
-/* One line of a pixel's history. */
-typedef struct {
-    int face;
-    float value;  /* what the fragment brought: d, 1/d or y */
-    float stored; /* what the buffer held before the test */
-    bool passed;
-} TraceEntry;
-
-typedef struct {
-    long pixel;              /* y * width + x of the traced pixel, -1 for none */
-    TraceEntry *entries;
-    int count, cap;
-    bool overflowed;         /* more entries than memory allowed: the log is cut */
-} TraceLog;
 
 typedef struct {
     int width, height;
@@ -48,14 +31,13 @@ typedef struct {
     TraceLog trace;
 } Target;
 
-/* Buffers of width x height (1 .. IMAGE_MAX_SIDE each); depth is set to
- * clear_value, face to NO_FACE, counts to zero, no pixel traced. */
-bool target_init(Target *t, int width, int height, float clear_value, Error *err);
+/* Buffers of width x height (1 .. IMAGE_MAX_SIDE each), counts at zero, no
+ * pixel traced. The depth buffer is not cleared here: the lesson's own
+ * clear_depth does that, the one place it happens. */
+bool target_init(Target *t, int width, int height, Error *err);
 void target_free(Target *t);
 /* Trace pixel (x, y) from now on (x, y inside the target). */
 void target_trace_pixel(Target *t, int x, int y);
-
-void trace_log_append(TraceLog *log, int face, float value, float stored, bool passed);
 
 /* Called by a lesson's depth test for every fragment it tests at pixel i.
  * Inline with external linkage (target.c holds its one external definition),

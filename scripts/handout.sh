@@ -67,7 +67,9 @@ awk_regions=scripts/solution-regions.awk
 
 # The files of the lesson that hold regions, and its page if it has any.
 marked=""
-for f in lessons/"$name"/* docs/"$name".md; do
+# (extras/ included: a lesson's files are every file below its directory)
+lesson_files=$(find lessons/"$name" -type f | sort | tr '\n' ' ')
+for f in $lesson_files docs/"$name".md; do
     [ -f "$f" ] || continue
     if grep -Eq 'SOLUTION (BEGIN|STUB|END)' "$f"; then marked="$marked $f"; fi
 done
@@ -111,7 +113,7 @@ rm -rf "$tmp/tests/tools" "$tmp/tests/bench/limit.c"
 if [ -d "$tmp/docs/diffs" ]; then
     find "$tmp/docs/diffs" -name "*${number}[_.]*" -exec rm -f {} + || die "cannot leave out docs/diffs"
 fi
-for f in lessons/"$name"/*; do
+for f in $lesson_files; do
     case " $marked " in
         *" $f "*) awk -v mode=strip -f "$awk_regions" "$f" >"$tmp/$f" ||
                       die "cannot write the handout of $f" ;;
@@ -152,7 +154,7 @@ fi
 # trimmed, without their trailing comment and final ";".
 lines="$tmp.lines"
 # All of the lesson is read: a line it has outside the regions gives nothing away.
-sources=$(ls lessons/"$name"/* | tr '\n' ' ')
+sources=$lesson_files
 case " $marked " in
     *" docs/$name.md "*) sources="$sources docs/$name.md" ;;
 esac
@@ -163,7 +165,7 @@ files="$tmp.files"
     sed 's|^\./||' | while read -r f; do
         case $f in
             lessons/"$name"/*|docs/"$name".md) echo "$f" ;;
-            lessons/*/*|docs/[0-9][0-9]_*) ;;
+            lessons/*|docs/[0-9][0-9]_*) ;;
             *) echo "$f" ;;
         esac
     done >"$files"
@@ -202,7 +204,7 @@ rm -rf "$dest"
 mv "$tmp" "$dest" || die "cannot move the handout to $dest"
 tmp=""
 
-todos=$(cd "$dest" && grep -n 'TODO(student):' "lessons/$name"/* "docs/$name.md" 2>/dev/null || true)
+todos=$(cd "$dest" && grep -rn 'TODO(student):' "lessons/$name" "docs/$name.md" 2>/dev/null || true)
 count=$(echo "$todos" | grep -c . || true)
 echo "$prog: wrote $dest: lessons/$name with $count solution region(s) taken out$(
     [ "$only" -eq 1 ] && echo ", no other lesson")"

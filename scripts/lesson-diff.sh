@@ -2,6 +2,12 @@
 # lesson-diff.sh FROM TO: the source difference between two lessons, which is
 # what the later lesson teaches. FROM and TO are lesson numbers (02) or names
 # (02_zbuffer). With --stat, one line per file: "<added> <removed> <file>".
+#
+# Compared: the files at the top of each lesson directory (main.c and the
+# taught files). Not compared: extras/, what a lesson shows but does not hand
+# on (bug modes, comparisons), and the REPLACES list. A file that TO's
+# REPLACES names as replacing one of FROM's is shown whole, as added, and the
+# file it replaces is left out: it is a new algorithm, not an edit.
 set -eu
 stat=0
 if [ "${1:-}" = "--stat" ]; then stat=1; shift; fi
@@ -18,6 +24,14 @@ find_lesson() {
 }
 from=$(find_lesson "$1")
 to=$(find_lesson "$2")
+# "new old" pairs: TO's files that replace one of FROM's.
+replaces=""
+if [ -f "$to/REPLACES" ]; then
+    replaces=$(sed -e 's/#.*//' -e '/^[[:space:]]*$/d' "$to/REPLACES")
+fi
+replaced_file() { # FROM's files that TO replaces
+    echo "$replaces" | awk 'NF == 2 { print $2 }'
+}
 # The lessons are compared as they read without their solution markers
 # (comments for make handout, docs/teaching.md): copies, cleaned, in a
 # temporary directory with the same relative paths.
@@ -27,11 +41,18 @@ trap 'rm -rf "$clean"' EXIT
 for d in "$from" "$to"; do
     mkdir -p "$clean/$d"
     for f in "$d"/*; do
+        [ -f "$f" ] || continue
+        case ${f##*/} in REPLACES) continue ;; esac
+        if [ "$d" = "$from" ] && replaced_file | grep -qx "${f##*/}"; then continue; fi
         awk -v mode=clean -f "$regions" "$f" >"$clean/$f"
     done
 done
 cd "$clean"
 if [ "$stat" -eq 0 ]; then
+    if [ -n "$replaces" ]; then
+        echo "$replaces" | awk -v from="$from" -v to="$to" 'NF == 2 {
+            printf "# %s/%s replaces %s/%s: shown whole below\n", to, $1, from, $2 }'
+    fi
     # -N: a file that exists in one lesson only shows as wholly added or removed.
     # The files' dates are cut from the --- and +++ lines, so that the diff of
     # two lessons (and docs/diffs/, which keeps it) changes only with the code.

@@ -9,14 +9,13 @@ bool ybuffer_init(YBuffer *yb, int width, Error *err)
     TraceLog no_trace = {-1, NULL, 0, 0, false};
     yb->trace = no_trace;
     yb->width = width;
-    yb->y = malloc((size_t)width * sizeof *yb->y);
-    yb->owner = malloc((size_t)width * sizeof *yb->owner);
+    yb->y = calloc((size_t)width, sizeof *yb->y);
+    yb->owner = calloc((size_t)width, sizeof *yb->owner);
     if (!yb->y || !yb->owner) {
         ybuffer_free(yb);
         return error_set(err, "out of memory for a y-buffer of %d columns", width);
     }
-    clear_ybuffer(yb);
-    return true;
+    return true; /* not cleared: clear_ybuffer is step 1 */
 }
 
 void ybuffer_free(YBuffer *yb)

@@ -21,7 +21,7 @@
 
 #include "error.h"
 #include "image.h"
-#include "target.h"
+#include "fragments.h"
 
 /* "Nothing seen here yet": smaller than any y a segment can bring. */
 #define YBUFFER_CLEARED INT_MIN
@@ -41,9 +41,10 @@ typedef struct {
     int *y;             /* the y-buffer: nearest y seen per column */
     int *owner;         /* the segment that won each column (index), NO_SEGMENT if none */
     FragmentStats stats; /* column tests made, passed, failed */
-    TraceLog trace;      /* --trace: every test made at one column (target.h) */
+    TraceLog trace;      /* --trace: every test made at one column (fragments.h) */
 } YBuffer;
 
+/* The buffer of width columns, not yet cleared (clear_ybuffer does that). */
 bool ybuffer_init(YBuffer *yb, int width, Error *err);
 void ybuffer_free(YBuffer *yb);
 
@@ -77,8 +78,7 @@ static inline bool depth_test(int y, int stored)
      * drawn first. */
     return y > stored;
     /* SOLUTION STUB
-    (void)y;
-    (void)stored;
+    (void)y; (void)stored;
     return false;
     */
     /* SOLUTION END */

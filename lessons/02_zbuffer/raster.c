@@ -9,14 +9,22 @@
  * A triangle cut at the guard band gets its new corners' d by the same rule. */
 #define DEPTH_LINEARITY LINEAR_D
 
-/* SOLUTION BEGIN: the value the depth buffer is cleared to (the second
- * field): farther than any fragment, so that the first fragment at a pixel
- * always passes the test. */
-const Rasterizer ZBUFFER = {"02_zbuffer", INFINITY, draw_face, NULL};
-/* SOLUTION STUB
-const Rasterizer ZBUFFER = {"02_zbuffer", 0.0f, draw_face, NULL};
-*/
-/* SOLUTION END */
+/* Before the first face: every pixel "infinitely far", so that the first
+ * fragment to reach a pixel always passes the test; no face there yet. */
+void clear_depth(Target *t)
+{
+    size_t n = (size_t)t->width * (size_t)t->height;
+    for (size_t i = 0; i < n; i++) {
+        /* SOLUTION BEGIN: the value every pixel of the depth buffer starts
+         * with: it must lose to any fragment in front of the camera. */
+        t->depth[i] = INFINITY;
+        /* SOLUTION STUB
+        t->depth[i] = 0.0f;
+        */
+        /* SOLUTION END */
+        t->face[i] = NO_FACE;
+    }
+}
 
 /* Rounds a screen position to the nearest 1/256 of a pixel. From here on
  * every coverage decision is made in integers, so it is exact: two triangles
@@ -47,9 +55,7 @@ int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p)
      * this y-down screen, zero on the line. */
     return (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x);
     /* SOLUTION STUB
-    (void)a;
-    (void)b;
-    (void)p;
+    (void)a; (void)b; (void)p;
     return 0;
     */
     /* SOLUTION END */
@@ -69,8 +75,7 @@ bool is_top_left(FixedPoint a, FixedPoint b)
     bool left = dy < 0;
     return top || left;
     /* SOLUTION STUB
-    (void)a;
-    (void)b;
+    (void)a; (void)b;
     return false;
     */
     /* SOLUTION END */
@@ -84,8 +89,7 @@ bool edge_covers(int64_t e, bool top_left)
      * or left edge. */
     return e > 0 || (e == 0 && top_left);
     /* SOLUTION STUB
-    (void)e;
-    (void)top_left;
+    (void)e; (void)top_left;
     return false;
     */
     /* SOLUTION END */
@@ -155,10 +159,7 @@ double interpolate_depth(Barycentric w, double d0, double d1, double d2)
      * itself to be linear on the screen. */
     return w.w0 * d0 + w.w1 * d1 + w.w2 * d2;
     /* SOLUTION STUB
-    (void)w;
-    (void)d0;
-    (void)d1;
-    (void)d2;
+    (void)w; (void)d0; (void)d1; (void)d2;
     return 0.0;
     */
     /* SOLUTION END */
@@ -182,9 +183,7 @@ inline bool depth_test(Target *t, size_t i, int face, float d)
     }
     return passed;
     /* SOLUTION STUB
-    (void)face;
-    (void)d;
-    (void)stored;
+    (void)face; (void)d; (void)stored;
     return false;
     */
     /* SOLUTION END */
@@ -269,3 +268,5 @@ void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
             draw_triangle(t, band[0], band[j], band[j + 1], f->face, ctx->far);
     }
 }
+
+const Rasterizer ZBUFFER = {.clear = clear_depth, .draw_face = draw_face, .stored_to_depth = NULL};

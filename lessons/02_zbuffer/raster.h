@@ -8,7 +8,10 @@
  * corners. The depth buffer keeps, per pixel, the smallest d seen so far.
  *
  * This lesson interpolates d itself linearly on the screen: the naive way,
- * wrong under perspective. Lesson 03 changes interpolate_depth and nothing else. */
+ * wrong under perspective. Lesson 03 takes 1/d to be linear instead, and
+ * changes only that: interpolate_depth blends the corners' 1/d and inverts
+ * the result, draw_triangle works out the corners' 1/d once per triangle, and
+ * the guard band cuts a triangle by the same rule (DEPTH_LINEARITY). */
 #ifndef RASTER_H
 #define RASTER_H
 
@@ -16,7 +19,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "render.h"
+#include "rasterizer.h"
 #include "target.h"
 
 #define SUBPIXEL_BITS 8                         /* as GPUs do: 1/256 of a pixel */
@@ -32,6 +35,7 @@ typedef struct { int x0, y0, x1, y1; } PixelBox;
 /* The weights of the three corners at a point: w0 + w1 + w2 = 1. */
 typedef struct { double w0, w1, w2; } Barycentric;
 
+void clear_depth(Target *t);
 FixedPoint snap_to_fixed(ScreenVertex v);
 FixedPoint pixel_centre(int x, int y);
 int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p);
@@ -46,7 +50,7 @@ void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, in
                    double far);
 void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
 
-/* What render.h needs to know: the buffer holds d, cleared to +infinity. */
+/* The lesson as the pipeline sees it: the buffer holds d, cleared to +infinity. */
 extern const Rasterizer ZBUFFER;
 
 #endif

@@ -5,24 +5,20 @@
 
 #include "guard_band.h"
 
-/* What each rule takes to be linear on the screen: 1/d (right) or d itself
- * (naive). A triangle cut at the guard band gets its new corners' d by the
- * same rule. */
-static DepthLinearity depth_linearity(DepthInterp rule)
-{
-    /* SOLUTION BEGIN: what the guard band takes to be linear on the screen
-     * when it cuts a triangle and gives the new corners their depth: the
-     * same quantity as the rule, d for DEPTH_NAIVE, 1/d otherwise. */
-    return rule == DEPTH_NAIVE ? LINEAR_D : LINEAR_INV_D;
-    /* SOLUTION STUB
-    (void)rule;
-    return LINEAR_D;
-    */
-    /* SOLUTION END */
-}
+/* What this lesson takes to be linear on the screen: 1/d, the right way.
+ * A triangle cut at the guard band gets its new corners' d by the same rule. */
+#define DEPTH_LINEARITY LINEAR_INV_D
 
-const Rasterizer ZBUFFER = {"03_perspective_z", INFINITY, draw_face, NULL};
-const Rasterizer ZBUFFER_NAIVE = {"03_perspective_z", INFINITY, draw_face_naive, NULL};
+/* Before the first face: every pixel "infinitely far", so that the first
+ * fragment to reach a pixel always passes the test; no face there yet. */
+void clear_depth(Target *t)
+{
+    size_t n = (size_t)t->width * (size_t)t->height;
+    for (size_t i = 0; i < n; i++) {
+        t->depth[i] = INFINITY;
+        t->face[i] = NO_FACE;
+    }
+}
 
 /* Rounds a screen position to the nearest 1/256 of a pixel. From here on
  * every coverage decision is made in integers, so it is exact: two triangles
@@ -140,16 +136,9 @@ double interpolate_depth(Barycentric w, double inv_d0, double inv_d1, double inv
     double inv_d = w.w0 * inv_d0 + w.w1 * inv_d1 + w.w2 * inv_d2;
     return 1 / inv_d;
     /* SOLUTION STUB
-    return interpolate_depth_naive(w, 1 / inv_d0, 1 / inv_d1, 1 / inv_d2);
+    return w.w0 / inv_d0 + w.w1 / inv_d1 + w.w2 / inv_d2;
     */
     /* SOLUTION END */
-}
-
-/* Lesson 02's naive way, kept for --depth-interp naive: d = w0 d0 + w1 d1 + w2 d2,
- * as if d were linear on the screen. The same weights give 2.7, too far. */
-double interpolate_depth_naive(Barycentric w, double d0, double d1, double d2)
-{
-    return w.w0 * d0 + w.w1 * d1 + w.w2 * d2;
 }
 
 /* The z-buffer test: the fragment wins when it is nearer than what the pixel
@@ -187,7 +176,7 @@ static EdgeStepper edge_stepper(FixedPoint a, FixedPoint b, FixedPoint first_cen
 }
 
 void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, int face,
-                   double far, DepthInterp rule)
+                   double far)
 {
     FixedPoint p0 = snap_to_fixed(a), p1 = snap_to_fixed(b), p2 = snap_to_fixed(c);
     int64_t area = edge_function(p0, p1, p2); /* twice the signed area */
@@ -221,8 +210,7 @@ void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, in
             }
             entered = true;
             Barycentric w = barycentric_weights(e0, e1, e2, inv_area);
-            double d = rule == DEPTH_NAIVE ? interpolate_depth_naive(w, a.d, b.d, c.d)
-                                           : interpolate_depth(w, inv_d0, inv_d1, inv_d2);
+            double d = interpolate_depth(w, inv_d0, inv_d1, inv_d2);
             if (d > far)
                 continue; /* beyond the far plane: discarded before any test */
             depth_test(t, (size_t)y * (size_t)t->width + (size_t)x, face, (float)d);
@@ -236,8 +224,7 @@ void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, in
 /* A face is drawn as its triangles. One reaching far off the screen is first
  * cut down to the guard band (common/guard_band.h), where fixed point holds
  * it; what is left is a convex polygon, drawn as a fan. */
-static void draw_face_by_rule(Target *t, const ScreenFace *f, const DrawContext *ctx,
-                              DepthInterp rule)
+void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
 {
     if (!screen_face_is_finite(f))
         return; /* a corner that is not a number: no picture is right, so none is drawn */
@@ -245,18 +232,10 @@ static void draw_face_by_rule(Target *t, const ScreenFace *f, const DrawContext 
         const Tri *tri = &f->tris[k];
         ScreenVertex corners[3] = {f->v[tri->c[0]], f->v[tri->c[1]], f->v[tri->c[2]]};
         ScreenVertex band[GUARD_BAND_MAX_OUT(3)];
-        int n = guard_band_clip(corners, 3, t->width, t->height, depth_linearity(rule), band);
+        int n = guard_band_clip(corners, 3, t->width, t->height, DEPTH_LINEARITY, band);
         for (int j = 1; j + 1 < n; j++)
-            draw_triangle(t, band[0], band[j], band[j + 1], f->face, ctx->far, rule);
+            draw_triangle(t, band[0], band[j], band[j + 1], f->face, ctx->far);
     }
 }
 
-void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
-{
-    draw_face_by_rule(t, f, ctx, DEPTH_PERSPECTIVE);
-}
-
-void draw_face_naive(Target *t, const ScreenFace *f, const DrawContext *ctx)
-{
-    draw_face_by_rule(t, f, ctx, DEPTH_NAIVE);
-}
+const Rasterizer ZBUFFER = {.clear = clear_depth, .draw_face = draw_face, .stored_to_depth = NULL};

@@ -7,10 +7,9 @@
  * weights of the pixel centre, and they interpolate the view depth d of the
  * corners. The depth buffer keeps, per pixel, the smallest d seen so far.
  *
- * Under perspective d is not linear on the screen, 1/d is: this lesson
- * interpolates 1/d and takes the reciprocal (interpolate_depth). Lesson 02's
- * naive rule stays, as interpolate_depth_naive, so that one program can draw
- * with either (--depth-interp) and show where they disagree (--compare-naive). */
+ * Under perspective d is not linear on the screen, 1/d is: this lesson blends
+ * the corners' 1/d with the weights and takes the reciprocal
+ * (interpolate_depth), where lesson 02 blended d itself. */
 #ifndef RASTER_H
 #define RASTER_H
 
@@ -18,7 +17,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "render.h"
+#include "rasterizer.h"
 #include "target.h"
 
 #define SUBPIXEL_BITS 8                         /* as GPUs do: 1/256 of a pixel */
@@ -34,12 +33,7 @@ typedef struct { int x0, y0, x1, y1; } PixelBox;
 /* The weights of the three corners at a point: w0 + w1 + w2 = 1. */
 typedef struct { double w0, w1, w2; } Barycentric;
 
-/* How a pixel's depth comes from its corners' (--depth-interp). */
-typedef enum {
-    DEPTH_PERSPECTIVE, /* 1/d linear on the screen: right */
-    DEPTH_NAIVE        /* d linear on the screen: lesson 02's way, wrong under perspective */
-} DepthInterp;
-
+void clear_depth(Target *t);
 FixedPoint snap_to_fixed(ScreenVertex v);
 FixedPoint pixel_centre(int x, int y);
 int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p);
@@ -48,17 +42,13 @@ bool edge_covers(int64_t e, bool top_left);
 PixelBox bounding_box(FixedPoint a, FixedPoint b, FixedPoint c, int width, int height);
 Barycentric barycentric_weights(int64_t e0, int64_t e1, int64_t e2, double inv_area);
 double interpolate_depth(Barycentric w, double inv_d0, double inv_d1, double inv_d2);
-double interpolate_depth_naive(Barycentric w, double d0, double d1, double d2);
 bool depth_test(Target *t, size_t i, int face, float d);
 /* Corners inside the guard band (guard_band.h): draw_face sees to that. */
 void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, int face,
-                   double far, DepthInterp rule);
-void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx);       /* perspective */
-void draw_face_naive(Target *t, const ScreenFace *f, const DrawContext *ctx); /* naive */
+                   double far);
+void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
 
-/* What render.h needs to know: the buffer holds d, cleared to +infinity.
- * ZBUFFER draws with the right rule, ZBUFFER_NAIVE with lesson 02's. */
+/* The lesson as the pipeline sees it: the buffer holds d, cleared to +infinity. */
 extern const Rasterizer ZBUFFER;
-extern const Rasterizer ZBUFFER_NAIVE;
 
 #endif

@@ -6,13 +6,10 @@
 
 #include <math.h>
 
-#include "guard_band.h"
+#include "polygon.h"
 
 #define S ((int64_t)SUBPIXEL_ONE) /* sub-pixel units per pixel */
 #define HALF_PIXEL ((int64_t)SUBPIXEL_HALF)
-/* A polygon reaching past the guard band is clipped in a buffer on the stack
- * when it has at most this many corners; a bigger one is drawn as its triangles. */
-#define CLIP_MAX_CORNERS 32
 /* draw_polygon snaps a polygon's corners once, into an array on the stack of
  * this many; a polygon with more corners is drawn as its triangles. */
 #define POLYGON_MAX_CORNERS 256
@@ -20,7 +17,7 @@
 /* A polygon corner as the rasterizer uses it: snapped, with its 1/d. */
 typedef struct {
     int64_t x, y; /* sub-pixel units */
-    double inv_d; /* "projection stores 1/d" (d itself under DEPTH_NAIVE) */
+    double inv_d; /* "projection stores 1/d" */
 } Corner;
 
 /* One side of the polygon: the chain of edges from the top corner to the
@@ -56,12 +53,13 @@ static int64_t snap(double pixels)
 }
 
 /* 1/d is computed at the corners only; between them it is stepped. */
-static Corner corner(const ScreenVertex *v, DepthInterp rule)
+static Corner corner(const ScreenVertex *v)
 {
-    Corner c = {snap(v->x), snap(v->y), rule == DEPTH_NAIVE ? v->d : 1.0 / v->d};
+    Corner c = {snap(v->x), snap(v->y), 1.0 / v->d};
     return c;
 }
 
+/* Every pixel to 1/d = 0, a surface infinitely far: nothing drawn yet. */
 void clear_depth(Target *t)
 {
     size_t n = (size_t)t->width * (size_t)t->height;
@@ -71,7 +69,8 @@ void clear_depth(Target *t)
     }
 }
 
-/* inline: draw_span runs it for every pixel, where a function call would cost
+/* The depth test of one fragment at pixel i: it wins when inv_d > stored.
+ * inline: draw_span runs it for every pixel, where a function call would cost
  * as much as the test itself. */
 inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 {
@@ -90,14 +89,15 @@ inline bool depth_test(Target *t, size_t i, int face, float inv_d)
     }
     return passed;
     /* SOLUTION STUB
-    (void)face;
-    (void)inv_d;
-    (void)stored;
+    (void)face; (void)inv_d; (void)stored;
     return false;
     */
     /* SOLUTION END */
 }
 
+/* Sets up the edge from a to b (sub-pixel units, a above b) at row y_first:
+ * where it crosses that row's centre, its 1/d there, and their steps per
+ * scanline. False when it crosses no row centre at or after y_first. */
 bool edge_setup(Edge *e, int64_t ax, int64_t ay, double inv_a, int64_t bx, int64_t by,
                 double inv_b, int y_first)
 {
@@ -137,19 +137,13 @@ bool edge_setup(Edge *e, int64_t ax, int64_t ay, double inv_a, int64_t bx, int64
     e->inv_d = inv_a + ((double)(yc - ay) / S) * e->inv_d_step;
     return true;
     /* SOLUTION STUB
-    (void)e;
-    (void)ax;
-    (void)ay;
-    (void)inv_a;
-    (void)bx;
-    (void)by;
-    (void)inv_b;
-    (void)y_first;
+    (void)e; (void)ax; (void)ay; (void)inv_a; (void)bx; (void)by; (void)inv_b; (void)y_first;
     return false;
     */
     /* SOLUTION END */
 }
 
+/* One scanline down: one addition for x (plus a carry), one for 1/d. */
 void edge_step(Edge *e)
 {
     /* SOLUTION BEGIN: one row down the edge: x by step_pixel, and one pixel
@@ -167,14 +161,15 @@ void edge_step(Edge *e)
     /* SOLUTION END */
 }
 
-void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, double inv_far,
-               DepthInterp rule)
+/* Fills row y: the pixels whose centre x + 0.5 is in [left, right), on the
+ * screen. 1/d starts at the first pixel centre and steps by a constant per
+ * pixel; a fragment beyond the far plane (1/d < inv_far) is not tested. */
+void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, double inv_far)
 {
     /* SOLUTION BEGIN: fill row y from the left edge to the right edge,
      * clipped to the screen: 1/d at the first pixel centre, then one
      * addition per pixel; discard a fragment beyond the far plane (1/d <
-     * inv_far), test the others. Under DEPTH_NAIVE the value stepped is d,
-     * and the test still wants 1/d. */
+     * inv_far), test the others. */
     int64_t x_first = left->x_pixel < 0 ? 0 : left->x_pixel;
     int64_t x_stop = right->x_pixel > t->width ? t->width : right->x_pixel;
     if (x_first >= x_stop)
@@ -191,20 +186,12 @@ void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, 
 
     size_t i = (size_t)y * (size_t)t->width + (size_t)x_first;
     for (int64_t x = x_first; x < x_stop; x++, i++) {
-        /* Under DEPTH_NAIVE the value stepped was d: the test still wants 1/d. */
-        double fragment = rule == DEPTH_NAIVE ? 1.0 / inv_d : inv_d;
-        if (fragment >= inv_far) /* d <= far: a fragment beyond the far plane is discarded */
-            depth_test(t, i, face, (float)fragment);
+        if (inv_d >= inv_far) /* d <= far: a fragment beyond the far plane is discarded */
+            depth_test(t, i, face, (float)inv_d);
         inv_d += step; /* one addition per pixel */
     }
     /* SOLUTION STUB
-    (void)t;
-    (void)y;
-    (void)left;
-    (void)right;
-    (void)face;
-    (void)inv_far;
-    (void)rule;
+    (void)t; (void)y; (void)left; (void)right; (void)face; (void)inv_far;
     */
     /* SOLUTION END */
 }
@@ -226,7 +213,7 @@ static bool chain_next_edge(Chain *c, int y, Edge *e)
  * left edge to the right edge; at a corner, the next edge of that side takes
  * over, set up fresh from its own top. */
 static void walk_edges(Target *t, Chain *left_chain, Chain *right_chain, int y_first, int y_stop,
-                       int face, double inv_far, DepthInterp rule)
+                       int face, double inv_far)
 {
     Edge left, right;
     if (!chain_next_edge(left_chain, y_first, &left) ||
@@ -237,7 +224,7 @@ static void walk_edges(Target *t, Chain *left_chain, Chain *right_chain, int y_f
             return;
         if (y >= right.y_end && !chain_next_edge(right_chain, y, &right))
             return;
-        draw_span(t, y, &left, &right, face, inv_far, rule);
+        draw_span(t, y, &left, &right, face, inv_far);
         edge_step(&left);
         edge_step(&right);
     }
@@ -249,45 +236,11 @@ static bool corner_in_range(const ScreenVertex *v)
            fabs(v->x) <= SCANLINE_MAX_COORD && fabs(v->y) <= SCANLINE_MAX_COORD;
 }
 
-/* Convex on the screen, after snapping: every turn has the same sign (or none)
- * and y changes direction at most twice going round, so the polygon is one
- * loop with one left side and one right side. *turn gets the sign of the
- * turns: > 0 when the polygon goes clockwise on the screen (y down). */
-static bool convex_on_screen(const Corner *c, int n, int *turn)
-{
-    int sign = 0, y_turns = 0, last_dy = 0;
-    for (int i = 0; i < n; i++) {
-        const Corner *a = &c[i], *b = &c[(i + 1) % n], *next = &c[(i + 2) % n];
-        int64_t abx = b->x - a->x, aby = b->y - a->y;
-        int64_t bcx = next->x - b->x, bcy = next->y - b->y;
-        int64_t cross = abx * bcy - aby * bcx;
-        int s = (cross > 0) - (cross < 0);
-        if (s != 0 && sign != 0 && s != sign)
-            return false;
-        if (s != 0)
-            sign = s;
-        int dy = (aby > 0) - (aby < 0);
-        if (dy != 0 && last_dy != 0 && dy != last_dy)
-            y_turns++;
-        if (dy != 0)
-            last_dy = dy;
-    }
-    /* Close the loop: the direction of the first edge that moves in y. */
-    for (int i = 0; i < n; i++) {
-        int64_t aby = c[(i + 1) % n].y - c[i].y;
-        int dy = (aby > 0) - (aby < 0);
-        if (dy != 0) {
-            if (last_dy != 0 && dy != last_dy)
-                y_turns++;
-            break;
-        }
-    }
-    *turn = sign;
-    return y_turns <= 2;
-}
-
-bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far,
-                  DepthInterp rule)
+/* A convex polygon of n screen vertices, either winding, drawn whole. False,
+ * drawing nothing, when it is not convex on the screen once snapped, or has
+ * a corner not finite, not in front, or beyond SCANLINE_MAX_COORD, or more
+ * than POLYGON_MAX_CORNERS corners: the caller draws its triangles instead. */
+bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
 {
     if (n < 3)
         return true; /* nothing to draw */
@@ -297,10 +250,10 @@ bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far,
     for (int i = 0; i < n; i++) {
         if (!corner_in_range(&v[i]))
             return false;
-        c[i] = corner(&v[i], rule); /* snapped once: everything below works on c */
+        c[i] = corner(&v[i]); /* snapped once: everything below works on c */
     }
-    int turn;
-    if (!convex_on_screen(c, n, &turn))
+    int turn; /* > 0: clockwise on the screen (y down) */
+    if (!convex_on_screen(v, n, SUBPIXEL_ONE, &turn))
         return false;
 
     int top = 0, bottom = 0;
@@ -324,66 +277,15 @@ bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far,
     if (y_stop > t->height)
         y_stop = t->height;
     if (y_first < y_stop)
-        walk_edges(t, left, right, (int)y_first, (int)y_stop, face, 1.0 / far, rule);
+        walk_edges(t, left, right, (int)y_first, (int)y_stop, face, 1.0 / far);
     return true;
 }
 
-/* Draws polygon v[0 .. n-1], clipped to the guard band first when it reaches
- * beyond it. False when it was not drawn (not convex on the screen, or too
- * many corners to clip here): then its triangles are drawn instead. */
-static bool draw_clipped_polygon(Target *t, const ScreenVertex *v, int n, int face, double far,
-                                 DepthInterp rule)
-{
-    if (guard_band_contains(v, n, t->width, t->height))
-        return draw_polygon(t, v, n, face, far, rule);
-    if (n > CLIP_MAX_CORNERS)
-        return false;
-    /* New corners get their depth by the rule's own idea of what is linear. */
-    DepthLinearity linear = rule == DEPTH_NAIVE ? LINEAR_D : LINEAR_INV_D;
-    ScreenVertex clipped[GUARD_BAND_MAX_OUT(CLIP_MAX_CORNERS)];
-    int m = guard_band_clip(v, n, t->width, t->height, linear, clipped);
-    if (m < 3 || draw_polygon(t, clipped, m, face, far, rule))
-        return true;
-    /* Cut far off the screen and snapped, a polygon can come out a hair from
-     * convex: draw it as a fan of triangles, as lessons 02 and 03 do. */
-    for (int j = 1; j + 1 < m; j++) {
-        ScreenVertex tri[3] = {clipped[0], clipped[j], clipped[j + 1]};
-        draw_polygon(t, tri, 3, face, far, rule);
-    }
-    return true;
-}
-
-static bool corners_are_numbers(const ScreenFace *f)
-{
-    for (int i = 0; i < f->n; i++)
-        if (!(isfinite(f->v[i].x) && isfinite(f->v[i].y) && isfinite(f->v[i].d) && f->v[i].d > 0))
-            return false;
-    return true;
-}
-
-static void draw_face_by(Target *t, const ScreenFace *f, const DrawContext *ctx, DepthInterp rule)
-{
-    if (!corners_are_numbers(f))
-        return; /* the pipeline drops such faces; draw nothing if one gets here */
-    if (f->convex && draw_clipped_polygon(t, f->v, f->n, f->face, ctx->far, rule))
-        return;
-    /* A non-convex face: its ear-clipped triangles, each one a convex polygon. */
-    for (int k = 0; k < f->n - 2; k++) {
-        ScreenVertex tri[3];
-        for (int j = 0; j < 3; j++)
-            tri[j] = f->v[f->tris[k].c[j]];
-        draw_clipped_polygon(t, tri, 3, f->face, ctx->far, rule);
-    }
-}
-
+/* One face of the mesh: a convex face as one polygon, a non-convex one (or
+ * one that is not convex on the screen) as its triangles (polygon.h). */
 void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
 {
-    draw_face_by(t, f, ctx, DEPTH_PERSPECTIVE);
-}
-
-void draw_face_naive(Target *t, const ScreenFace *f, const DrawContext *ctx)
-{
-    draw_face_by(t, f, ctx, DEPTH_NAIVE);
+    draw_face_as_polygons(t, f, ctx, draw_polygon);
 }
 
 /* A stored 1/d back as the view depth d; 0 (nothing drawn) is infinitely far. */
@@ -392,14 +294,12 @@ static double stored_to_depth(float stored)
     return stored > 0 ? 1.0 / stored : INFINITY;
 }
 
+/* Front object detection: the view depth of the nearest surface at (x, y). */
 double nearest_distance_at(const Target *t, int x, int y)
 {
     return stored_to_depth(t->depth[(size_t)y * (size_t)t->width + (size_t)x]);
 }
 
 const Rasterizer SCANLINE_ZBUFFER = {
-    "04_scanline_inverse_z", CLEARED_INV_DEPTH, draw_face, stored_to_depth,
-};
-const Rasterizer SCANLINE_ZBUFFER_NAIVE = {
-    "04_scanline_inverse_z", CLEARED_INV_DEPTH, draw_face_naive, stored_to_depth,
+    .clear = clear_depth, .draw_face = draw_face, .stored_to_depth = stored_to_depth,
 };

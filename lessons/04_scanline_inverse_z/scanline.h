@@ -22,8 +22,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "camera.h"
-#include "render.h"
+#include "rasterizer.h"
 #include "target.h"
 
 /* Nothing drawn yet: 1/d = 0 is a surface infinitely far away, so every real
@@ -40,12 +39,6 @@
  * Polygons reaching further are clipped to a guard band first. */
 #define SCANLINE_MAX_COORD ((double)(1 << 21))
 
-/* How a pixel's depth comes from its corners' (--depth-interp). */
-typedef enum {
-    DEPTH_PERSPECTIVE, /* 1/d stepped along edges and spans: exact, 1/d is linear */
-    DEPTH_NAIVE        /* d stepped instead, lesson 02's way: wrong under perspective */
-} DepthInterp;
-
 /* One edge of the polygon, walked one scanline at a time. On the current row
  * the edge crosses the row centre at
  *     x_edge = x_pixel + 0.5 - rem / den        (pixels, exactly)
@@ -58,57 +51,24 @@ typedef struct {
     int64_t step_rem;    /*   rem -= step_rem, and one more pixel when rem < 0 */
     double inv_d;        /* 1/d where the edge crosses this row's centre */
     double inv_d_step;   /* d(1/d)/dy: its change per scanline */
-                         /* (under DEPTH_NAIVE both hold d and dd/dy instead) */
     int y_end;           /* first row below the edge */
 } Edge;
 
-/* Every pixel to 0: nothing drawn. Faces to NO_FACE. */
-void clear_depth(Target *t);
-
-/* The depth test of one fragment at pixel i: wins when inv_d > stored.
- * Every tested fragment is reported with target_record. True when it won. */
-bool depth_test(Target *t, size_t i, int face, float inv_d);
-
-/* Sets up the edge from a to b (sub-pixel units, a above b, inverse depths
- * inv_a, inv_b, or depths under DEPTH_NAIVE) at row y_first: the edge's x
- * and 1/d at that row's centre and their increments per scanline. Returns
- * false when the edge crosses no row centre at or after y_first (nothing to
- * walk). */
+/* The steps, in the order scanline.c takes them (each is explained there). */
+void clear_depth(Target *t);                              /* 1/d = 0 everywhere */
+bool depth_test(Target *t, size_t i, int face, float inv_d); /* inv_d > stored wins */
 bool edge_setup(Edge *e, int64_t ax, int64_t ay, double inv_a, int64_t bx, int64_t by,
-                double inv_b, int y_first);
-/* One scanline down: one add for x (plus a carry), one add for 1/d. */
-void edge_step(Edge *e);
+                double inv_b, int y_first);               /* false: no row to walk */
+void edge_step(Edge *e);                                  /* one scanline down */
+void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, double inv_far);
+/* A convex polygon, either winding, drawn whole; false, drawing nothing, when
+ * it is not convex on the screen or a corner is out of range (then its
+ * triangles are drawn instead). */
+bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far);
+void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
+double nearest_distance_at(const Target *t, int x, int y); /* d = 1/stored, inf if none */
 
-/* Fills row y from the left edge to the right edge: the pixels whose centre
- * x + 0.5 is in [left, right), clipped to the screen. 1/d starts at the first
- * pixel centre and steps by a constant per pixel (under DEPTH_NAIVE d steps,
- * and each pixel tests 1/d of it). Fragments with 1/d < inv_far (beyond the
- * far plane) are discarded before the depth test. */
-void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, double inv_far,
-               DepthInterp rule);
-
-/* A convex polygon of n >= 3 screen vertices (either winding), drawn whole.
- * Returns false, drawing nothing, when the polygon is not convex on screen
- * (or has a vertex that is not finite, not in front, or beyond
- * SCANLINE_MAX_COORD, or more than 256 corners to snap at once): the caller
- * draws its triangles instead. A polygon of
- * zero area is convex and draws nothing. */
-bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far,
-                  DepthInterp rule);
-
-/* Front object detection: the view depth d = 1/stored of the nearest surface
- * at pixel (x, y); +infinity when nothing was drawn there (stored 0). */
-double nearest_distance_at(const Target *t, int x, int y);
-
-/* One face of the mesh: a convex face as one polygon, a non-convex one (or
- * one that is not convex on the screen) as its triangles. A face reaching
- * beyond the guard band is clipped to it first (guard_band.h). */
-void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx);       /* perspective */
-void draw_face_naive(Target *t, const ScreenFace *f, const DrawContext *ctx); /* naive */
-
-/* What render.h needs from this lesson: clear to 0, draw_face, and d = 1/stored.
- * SCANLINE_ZBUFFER steps 1/d, SCANLINE_ZBUFFER_NAIVE steps d (lesson 02's rule). */
+/* The lesson as the pipeline sees it: clear to 0, draw_face, and d = 1/stored. */
 extern const Rasterizer SCANLINE_ZBUFFER;
-extern const Rasterizer SCANLINE_ZBUFFER_NAIVE;
 
 #endif

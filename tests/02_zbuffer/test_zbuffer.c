@@ -20,7 +20,7 @@
 enum { RED = 0, GREEN = 1, BLUE = 2 }; /* the faces of triangles3, in scene order */
 
 /* triangles3 at 200 x 150 with its own camera: eye (0, 0, 10), fovy 45. */
-static void load_triangles3(Render *r, Target *t, float clear)
+static void load_triangles3(Render *r, Target *t, const Rasterizer *rz)
 {
     Options opt = {0};
     Error err;
@@ -29,8 +29,8 @@ static void load_triangles3(Render *r, Target *t, float clear)
     opt.scene = "triangles3";
     if (render_load(r, &opt, &err) != EXIT_OK)
         fail_msg("render_load: %s", err.msg);
-    if (!target_init(t, opt.width, opt.height, clear, &err))
-        fail_msg("target_init: %s", err.msg);
+    if (!render_target_init(t, rz, opt.width, opt.height, &err))
+        fail_msg("render_target_init: %s", err.msg);
 }
 
 static int32_t face_at(const Target *t, int x, int y)
@@ -70,7 +70,7 @@ static void zbuffer_resolves_the_cycle_of_triangles3(void **state)
     Render r;
     Target t;
     Error err;
-    load_triangles3(&r, &t, ZBUFFER.clear_value);
+    load_triangles3(&r, &t, &ZBUFFER);
     assert_true(render_faces(&r, &t, &ZBUFFER, NULL, 0, NULL, NULL, &err));
     for (int k = 0; k < 3; k++) {
         const Overlap *o = &OVERLAPS[k];
@@ -90,7 +90,7 @@ static void painter_gets_triangles3_wrong(void **state)
     Render r;
     Target t;
     Error err;
-    load_triangles3(&r, &t, ZBUFFER.clear_value);
+    load_triangles3(&r, &t, &ZBUFFER);
     assert_true(draw_painter(&r, &t, &ZBUFFER, &err));
     assert_int_equal(face_at(&t, 70, 90), BLUE);  /* wrong: red is nearer here */
     assert_int_equal(face_at(&t, 100, 40), BLUE); /* right by luck of the order */
@@ -111,7 +111,7 @@ static void no_painting_order_is_right_for_triangles3(void **state)
         Render r;
         Target t;
         Error err;
-        load_triangles3(&r, &t, ZBUFFER.clear_value);
+        load_triangles3(&r, &t, &ZBUFFER);
         assert_true(draw_in_own_buffers(&r, &t, &ZBUFFER, orders[p], alone, 3, &err));
         int right = 0;
         for (int k = 0; k < 3; k++)
@@ -131,7 +131,7 @@ static void depth_of_triangles3_is_linear_on_the_screen(void **state)
     Render r;
     Target t;
     Error err;
-    load_triangles3(&r, &t, ZBUFFER.clear_value);
+    load_triangles3(&r, &t, &ZBUFFER);
     assert_true(render_faces(&r, &t, &ZBUFFER, NULL, 0, NULL, NULL, &err));
     const double naive[3] = {9.489, 9.466, 9.515}, perspective[3] = {9.419, 9.398, 9.442};
     for (int k = 0; k < 3; k++) {
@@ -159,7 +159,7 @@ static void depth_is_interpolated_linearly_at_chosen_pixels(void **state)
     (void)state;
     Target t;
     Error err;
-    assert_true(target_init(&t, 64, 64, ZBUFFER.clear_value, &err));
+    assert_true(render_target_init(&t, &ZBUFFER, 64, 64, &err));
     ScreenVertex v[3] = {{0, 0, 1}, {64, 0, 3}, {0, 64, 5}};
     ScreenFace f = screen_triangle(v, 0);
     DrawContext ctx = {0.1, 100};
@@ -188,7 +188,7 @@ static void fragments_beyond_far_are_discarded_untested(void **state)
     (void)state;
     Target t;
     Error err;
-    assert_true(target_init(&t, 16, 16, ZBUFFER.clear_value, &err));
+    assert_true(render_target_init(&t, &ZBUFFER, 16, 16, &err));
     ScreenVertex v[3] = {{1, 1, 60}, {15, 1, 60}, {1, 15, 60}};
     ScreenFace f = screen_triangle(v, 0);
     DrawContext ctx = {0.1, 50};
@@ -251,8 +251,8 @@ static void separate_buffers_let_the_last_object_cover_the_first(void **state)
     Target right, wrong;
     Error err;
     build_two_objects(&r);
-    assert_true(target_init(&right, 64, 64, ZBUFFER.clear_value, &err));
-    assert_true(target_init(&wrong, 64, 64, ZBUFFER.clear_value, &err));
+    assert_true(render_target_init(&right, &ZBUFFER, 64, 64, &err));
+    assert_true(render_target_init(&wrong, &ZBUFFER, 64, 64, &err));
     assert_true(render_faces(&r, &right, &ZBUFFER, NULL, 0, NULL, NULL, &err));
     assert_true(draw_separate_buffers(&r, &wrong, &ZBUFFER, &err));
     /* One buffer: A (d 2) is in front at the centre. Separate buffers: B was
@@ -274,7 +274,7 @@ static void clear_to_zero_draws_nothing(void **state)
     Render r;
     Target t;
     Error err;
-    load_triangles3(&r, &t, CLEAR_ZERO_BUG);
+    load_triangles3(&r, &t, &CLEAR_ZERO_BUG);
     assert_true(render_faces(&r, &t, &ZBUFFER, NULL, 0, NULL, NULL, &err));
     assert_true(t.stats.tested > 0);
     assert_int_equal(t.stats.passed, 0);

@@ -15,6 +15,7 @@
 
 #include "bugs.h"
 #include "raster.h"
+#include "naive.h"
 #include "render.h"
 #include "test_support.h"
 
@@ -24,7 +25,7 @@ static Target new_target(int width, int height, const Rasterizer *rz)
 {
     Target t;
     Error err;
-    if (!target_init(&t, width, height, rz->clear_value, &err))
+    if (!render_target_init(&t, rz, width, height, &err))
         fail_msg("target_init: %s", err.msg);
     return t;
 }

@@ -51,7 +51,7 @@ static void quad_grid_mesh_in_perspective_covers_each_pixel_once(void **state)
     Render r;
     assert_true(render_from_mesh(&r, &m, &cam, "quad grid", &err));
     Target t;
-    assert_true(target_init(&t, 160, 120, SCANLINE_ZBUFFER.clear_value, &err));
+    assert_true(render_target_init(&t, &SCANLINE_ZBUFFER, 160, 120, &err));
     assert_true(render_faces(&r, &t, &SCANLINE_ZBUFFER, NULL, 0, NULL, NULL, &err));
     /* Quads far down the left lie behind the camera and are dropped at the
      * near plane; they are off screen, and the check below sees every pixel. */

@@ -28,7 +28,7 @@ static Target make_target(int width, int height)
 {
     Target t;
     Error err;
-    if (!target_init(&t, width, height, CLEARED_INV_DEPTH, &err))
+    if (!target_init(&t, width, height, &err))
         fail_msg("target_init: %s", err.msg);
     clear_depth(&t);
     return t;
@@ -46,7 +46,7 @@ static void draw_flat(Target *t, const double (*xy)[2], int n, double d, int fac
     ScreenVertex v[16];
     for (int i = 0; i < n; i++)
         v[i] = sv(xy[i][0], xy[i][1], d);
-    assert_true(draw_polygon(t, v, n, face, FAR, DEPTH_PERSPECTIVE));
+    assert_true(draw_polygon(t, v, n, face, FAR));
 }
 
 /* The same corners in the other winding. */
@@ -55,7 +55,7 @@ static void draw_flat_reversed(Target *t, const double (*xy)[2], int n, double d
     ScreenVertex v[16];
     for (int i = 0; i < n; i++)
         v[i] = sv(xy[n - 1 - i][0], xy[n - 1 - i][1], d);
-    assert_true(draw_polygon(t, v, n, face, FAR, DEPTH_PERSPECTIVE));
+    assert_true(draw_polygon(t, v, n, face, FAR));
 }
 
 /* The buffer as rows of characters: '.' where nothing was drawn; with digits,
@@ -404,8 +404,8 @@ static void non_convex_polygon_is_refused(void **state)
     Target t = make_target(8, 8);
     ScreenVertex bowtie[4] = {sv(0, 0, 2), sv(8, 8, 2), sv(8, 0, 2), sv(0, 8, 2)};
     ScreenVertex dart[4] = {sv(0, 0, 2), sv(4, 3, 2), sv(8, 0, 2), sv(4, 8, 2)};
-    assert_false(draw_polygon(&t, bowtie, 4, 0, FAR, DEPTH_PERSPECTIVE));
-    assert_false(draw_polygon(&t, dart, 4, 0, FAR, DEPTH_PERSPECTIVE));
+    assert_false(draw_polygon(&t, bowtie, 4, 0, FAR));
+    assert_false(draw_polygon(&t, dart, 4, 0, FAR));
     assert_int_equal(t.stats.tested, 0);
     target_free(&t);
 }
@@ -421,34 +421,12 @@ static void inverse_depth_is_linear_across_the_span(void **state)
     (void)state;
     Target t = make_target(8, 2);
     ScreenVertex quad[4] = {sv(0, 0, 2), sv(8, 0, 8), sv(8, 2, 8), sv(0, 2, 2)};
-    assert_true(draw_polygon(&t, quad, 4, 0, FAR, DEPTH_PERSPECTIVE));
+    assert_true(draw_polygon(&t, quad, 4, 0, FAR));
     for (int y = 0; y < 2; y++)
         for (int x = 0; x < 8; x++) {
             double expected = 0.5 + (x + 0.5) / 8.0 * (0.125 - 0.5);
             float stored = t.depth[y * 8 + x];
             assert_true(fabs(stored - expected) <= 2 * expected * FLT_EPSILON);
-        }
-    target_free(&t);
-}
-
-/* --depth-interp naive: the same quad, but d itself is stepped, as lesson 02
- * interpolated it: d = 2 + (x + 0.5) / 8 * (8 - 2), and the buffer still
- * holds 1/d of that. At x = 3 the right rule gives 1/d = 0.5 - 3.5/8 * 0.375
- * = 0.336 (d = 2.98), the naive one 1/5.125 = 0.195: it puts the middle of
- * the quad too far away. */
-static void naive_rule_steps_depth_itself(void **state)
-{
-    (void)state;
-    Target t = make_target(8, 2);
-    ScreenVertex quad[4] = {sv(0, 0, 2), sv(8, 0, 8), sv(8, 2, 8), sv(0, 2, 2)};
-    assert_true(draw_polygon(&t, quad, 4, 0, FAR, DEPTH_NAIVE));
-    for (int y = 0; y < 2; y++)
-        for (int x = 0; x < 8; x++) {
-            double expected = 1.0 / (2.0 + (x + 0.5) / 8.0 * 6.0);
-            float stored = t.depth[y * 8 + x];
-            if (fabs(stored - expected) > 2 * expected * FLT_EPSILON)
-                fail_msg("pixel (%d,%d): 1/d is %.9g, naive stepping gives %.9g", x, y, stored,
-                         expected);
         }
     target_free(&t);
 }
@@ -462,7 +440,7 @@ static void inverse_depth_is_linear_down_the_edges(void **state)
     (void)state;
     Target t = make_target(8, 64);
     ScreenVertex tri[3] = {sv(0, 0, 1), sv(8, 0, 1), sv(0, 64, 4)};
-    assert_true(draw_polygon(&t, tri, 3, 0, FAR, DEPTH_PERSPECTIVE));
+    assert_true(draw_polygon(&t, tri, 3, 0, FAR));
     for (int y = 0; y < 64; y++) {
         double expected = 1.0 + (y + 0.5) / 64.0 * (0.25 - 1.0);
         float stored = t.depth[y * 8];
@@ -490,7 +468,7 @@ static void stepping_along_a_long_span_stays_accurate(void **state)
     const int w = IMAGE_MAX_SIDE;
     Target t = make_target(w, 1);
     ScreenVertex quad[4] = {sv(0, 0, 1), sv(w, 0, 100), sv(w, 1, 100), sv(0, 1, 1)};
-    assert_true(draw_polygon(&t, quad, 4, 0, FAR, DEPTH_PERSPECTIVE));
+    assert_true(draw_polygon(&t, quad, 4, 0, FAR));
     assert_int_equal(t.stats.tested, w);
     int worst_x = -1;
     double worst = 0;
@@ -570,7 +548,7 @@ static void broken_corners_draw_nothing(void **state)
     for (int k = 0; k < 4; k++) {
         ScreenFace f = face_of(broken[k], 3, &tri, true);
         draw_face(&t, &f, &ctx);
-        assert_false(draw_polygon(&t, broken[k], 3, 0, FAR, DEPTH_PERSPECTIVE));
+        assert_false(draw_polygon(&t, broken[k], 3, 0, FAR));
     }
     assert_int_equal(t.stats.tested, 0);
     target_free(&t);
@@ -692,7 +670,7 @@ static void coverage_equals_the_edge_function_rule(void **state)
         if (!convex)
             continue;
         Target t = make_target(width, height);
-        assert_true(draw_polygon(&t, v, n, 0, FAR, DEPTH_PERSPECTIVE));
+        assert_true(draw_polygon(&t, v, n, 0, FAR));
         for (int y = 0; y < height; y++)
             for (int x = 0; x < width; x++) {
                 bool expected = reference_inside((const int64_t (*)[2])p, n, winding,
@@ -734,7 +712,6 @@ int main(void)
         cmocka_unit_test(tiny_triangles_cover_one_pixel_or_none),
         cmocka_unit_test(non_convex_polygon_is_refused),
         cmocka_unit_test(inverse_depth_is_linear_across_the_span),
-        cmocka_unit_test(naive_rule_steps_depth_itself),
         cmocka_unit_test(inverse_depth_is_linear_down_the_edges),
         cmocka_unit_test(stepping_along_a_long_span_stays_accurate),
         cmocka_unit_test(huge_triangle_covers_the_screen_once),

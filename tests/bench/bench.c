@@ -36,12 +36,12 @@ static bool measure_workload(const Rasterizer *rz, const Workload *w, int reps,
                              Measurement *m, Error *err)
 {
     Target t;
-    if (!target_init(&t, w->width, w->height, rz->clear_value, err))
+    if (!render_target_init(&t, rz, w->width, w->height, err))
         return false;
     double times[MAX_REPS];
     bool same = true;
     for (int k = -BENCH_WARMUP; k < reps; k++) {
-        target_reset(&t, rz->clear_value);
+        target_reset(&t, rz->clear);
         double start = now_seconds();
         workload_draw(w, &t, rz);
         double elapsed = now_seconds() - start;

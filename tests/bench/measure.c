@@ -12,13 +12,10 @@ double now_seconds(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
-void target_reset(Target *t, float clear)
+void target_reset(Target *t, void (*clear)(Target *t))
 {
     size_t n = (size_t)t->width * (size_t)t->height;
-    for (size_t i = 0; i < n; i++) {
-        t->depth[i] = clear;
-        t->face[i] = NO_FACE;
-    }
+    clear(t);
     memset(t->overdraw, 0, n * sizeof *t->overdraw);
     FragmentStats none = {0};
     t->stats = none;

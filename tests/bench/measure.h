@@ -37,7 +37,7 @@ typedef struct {
 double now_seconds(void);
 
 /* Back to the state target_init leaves: depth = clear, no face, no counts. */
-void target_reset(Target *t, float clear);
+void target_reset(Target *t, void (*clear)(Target *t));
 
 /* Median, minimum and maximum of times[0 .. n-1] (n >= 1; sorts times). */
 void summarise_times(double *times, int n, double *median, double *min, double *max);

@@ -178,7 +178,16 @@ static double inverse(float stored)
     return 1.0 / stored;
 }
 
-static const Rasterizer RECORDER = {"recorder", 0.0f, record_face, inverse};
+static void clear_to_zero(Target *t)
+{
+    for (int i = 0; i < t->width * t->height; i++) {
+        t->depth[i] = 0.0f;
+        t->face[i] = NO_FACE;
+    }
+}
+
+static const Rasterizer RECORDER = {
+    .clear = clear_to_zero, .draw_face = record_face, .stored_to_depth = inverse};
 
 static int hook_calls;
 static bool count_hook(void *data, const Target *t, const ScreenFace *f, Error *err)
@@ -216,7 +225,7 @@ static void faces_reach_the_rasterizer_in_the_given_order(void **state)
     Target t;
     Error err;
     three_face_render(&r);
-    assert_true(target_init(&t, 8, 8, RECORDER.clear_value, &err));
+    assert_true(render_target_init(&t, &RECORDER, 8, 8, &err));
     drawn_count = 0;
     hook_calls = 0;
     const int order[4] = {0, 2, 1, 0};
@@ -242,7 +251,7 @@ static void view_depth_converts_and_marks_the_background(void **state)
     Target t;
     Error err;
     three_face_render(&r);
-    assert_true(target_init(&t, 8, 8, RECORDER.clear_value, &err));
+    assert_true(render_target_init(&t, &RECORDER, 8, 8, &err));
     assert_true(render_faces(&r, &t, &RECORDER, NULL, 0, NULL, NULL, &err));
     float *d = render_view_depth(&t, &RECORDER);
     assert_non_null(d);
@@ -262,7 +271,7 @@ static void summary_has_the_documented_format(void **state)
     Target t;
     Error err;
     three_face_render(&r);
-    assert_true(target_init(&t, 2, 2, 0, &err));
+    assert_true(render_target_init(&t, &RECORDER, 2, 2, &err));
     assert_true(render_faces(&r, &t, &RECORDER, NULL, 0, NULL, NULL, &err));
     t.overdraw[0] = 0, t.overdraw[1] = 1, t.overdraw[2] = 2, t.overdraw[3] = 0;
     t.stats.tested = 3, t.stats.passed = 2, t.stats.failed = 1;
@@ -272,7 +281,7 @@ static void summary_has_the_documented_format(void **state)
     char buf[1024] = "";
     FILE *f = fmemopen(buf, sizeof buf - 1, "w");
     assert_non_null(f);
-    render_print_summary(f, &r, &t, &RECORDER, &opt);
+    render_print_summary(f, "recorder", &r, &t, &opt);
     fclose(f);
     assert_string_equal(buf,
                         "recorder: three faces (3 faces): 1 triangle drawn, 2 dropped at the "
@@ -292,7 +301,7 @@ static void outputs_are_written_into_new_directories(void **state)
     Target t;
     Error err;
     three_face_render(&r);
-    assert_true(target_init(&t, 8, 8, RECORDER.clear_value, &err));
+    assert_true(render_target_init(&t, &RECORDER, 8, 8, &err));
     assert_true(render_faces(&r, &t, &RECORDER, NULL, 0, NULL, NULL, &err));
     const char *dir = test_dir("render_outputs");
     char png[512], pfm[512], pgm[512];

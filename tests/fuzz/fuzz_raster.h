@@ -115,12 +115,17 @@ static void fuzz_check_books(const Target *t, const Rasterizer *rz, int nfaces)
 {
     size_t n = (size_t)t->width * (size_t)t->height;
     uint64_t overdraw = 0;
+    Target one; /* what rz->clear puts in a pixel */
+    Error err;
+    fuzz_check(render_target_init(&one, rz, 1, 1, &err), "a 1 x 1 target");
+    float cleared_value = one.depth[0];
+    target_free(&one);
     for (size_t i = 0; i < n; i++) {
         overdraw += t->overdraw[i];
         fuzz_check(t->face[i] == NO_FACE || (t->face[i] >= 0 && t->face[i] < nfaces),
                    "a pixel holds a face that was drawn");
-        bool cleared = t->depth[i] == rz->clear_value ||
-                       (isnan(t->depth[i]) && isnan(rz->clear_value));
+        bool cleared = t->depth[i] == cleared_value ||
+                       (isnan(t->depth[i]) && isnan(cleared_value));
         fuzz_check((t->face[i] == NO_FACE) == cleared,
                    "a pixel has a face exactly when its depth changed");
     }
@@ -153,7 +158,7 @@ static int fuzz_rasterizer(const Rasterizer *rz, const uint8_t *data, size_t siz
 
     Target t;
     Error err;
-    fuzz_check(target_init(&t, width, height, rz->clear_value, &err), "target_init");
+    fuzz_check(render_target_init(&t, rz, width, height, &err), "target_init");
     int nfaces = 1 + fuzz_u8(&b) % FUZZ_MAX_FACES;
     for (int face = 0; face < nfaces; face++) {
         uint8_t head = fuzz_u8(&b);

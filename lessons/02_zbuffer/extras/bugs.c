@@ -1,6 +1,8 @@
 /* bugs.c: two classic z-buffer mistakes (see bugs.h). */
 #include "bugs.h"
 
+#include "raster.h"
+
 #include <math.h>
 #include <stdlib.h>
 
@@ -73,9 +75,23 @@ static Box faces_box(const Render *r, const int *faces, int n, int width, int he
     return box;
 }
 
+/* What rz->clear puts in every pixel: read off a cleared 1 x 1 target. */
+static float cleared_value(const Rasterizer *rz, Error *err, bool *ok)
+{
+    Target one;
+    *ok = render_target_init(&one, rz, 1, 1, err);
+    float v = *ok ? one.depth[0] : 0.0f;
+    target_free(&one);
+    return v;
+}
+
 bool draw_in_own_buffers(Render *r, Target *t, const Rasterizer *rz, const int *order,
                          const int *group, int n, Error *err)
 {
+    bool cleared_ok;
+    float cleared = cleared_value(rz, err, &cleared_ok);
+    if (!cleared_ok)
+        return false;
     size_t pixels = (size_t)t->width * (size_t)t->height;
     float *own = malloc(pixels * sizeof *own);
     if (!own)
@@ -88,7 +104,7 @@ bool draw_in_own_buffers(Render *r, Target *t, const Rasterizer *rz, const int *
         Box box = faces_box(r, order + start, end - start, t->width, t->height);
         for (int y = box.y0; y <= box.y1; y++)
             for (int x = box.x0; x <= box.x1; x++)
-                own[(size_t)y * t->width + x] = rz->clear_value;
+                own[(size_t)y * (size_t)t->width + (size_t)x] = cleared;
         t->depth = own; /* the group sees only its own buffer */
         ok = render_faces(r, t, rz, order + start, end - start, NULL, NULL, err);
         t->depth = shared;
@@ -96,8 +112,8 @@ bool draw_in_own_buffers(Render *r, Target *t, const Rasterizer *rz, const int *
          * there so that --depth-out shows what the picture shows. */
         for (int y = box.y0; y <= box.y1; y++)
             for (int x = box.x0; x <= box.x1; x++) {
-                size_t i = (size_t)y * t->width + x;
-                if (own[i] != rz->clear_value)
+                size_t i = (size_t)y * (size_t)t->width + (size_t)x;
+                if (own[i] != cleared)
                     shared[i] = own[i];
             }
     }
@@ -124,6 +140,18 @@ static bool sort_by_object(const int *object, int objects, int n, int *order, in
     free(start);
     return true;
 }
+
+/* --bug clear-zero: every pixel to 0, the nearest depth there is. */
+static void clear_to_zero(Target *t)
+{
+    size_t n = (size_t)t->width * (size_t)t->height;
+    for (size_t i = 0; i < n; i++) {
+        t->depth[i] = 0.0f;
+        t->face[i] = NO_FACE;
+    }
+}
+
+const Rasterizer CLEAR_ZERO_BUG = {.clear = clear_to_zero, .draw_face = draw_face};
 
 bool draw_separate_buffers(Render *r, Target *t, const Rasterizer *rz, Error *err)
 {

@@ -13,8 +13,8 @@
 
 #include "render.h"
 
-/* The value --bug clear-zero clears the depth buffer to. */
-#define CLEAR_ZERO_BUG 0.0f
+/* --bug clear-zero: the lesson's draw_face, with the buffer cleared to 0. */
+extern const Rasterizer CLEAR_ZERO_BUG;
 
 /* object_of_face[i]: which object face i belongs to, numbered 0, 1, ... in
  * the order of each object's first face. Returns the number of objects, or

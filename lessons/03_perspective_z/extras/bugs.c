@@ -28,5 +28,5 @@ static double negated_to_depth(float stored)
     return -(double)stored;
 }
 
-const Rasterizer NEGATED_W_BUG = {"03_perspective_z", INFINITY, draw_face_negated_w,
-                                  negated_to_depth};
+const Rasterizer NEGATED_W_BUG = {.clear = clear_depth, .draw_face = draw_face_negated_w,
+                                  .stored_to_depth = negated_to_depth};

@@ -1,0 +1,62 @@
+/* lesson.h: the program around a lesson of the 3-D series (02 on). A
+ * lesson's main.c is its outline, one call per step:
+ *
+ *     run_load      the command line, the scene, the camera, the buffers
+ *     rz->clear     the lesson's clear_depth
+ *     run_draw      every face in mesh order through the lesson's draw_face
+ *     run_write     the pictures asked for (--out, --depth-out, ...)
+ *     run_report    the summary, then --trace, --ascii and --compare
+ *     run_end       frees everything; returns the exit status
+ *
+ * What a lesson shows but does not teach (a bug on purpose, a comparison)
+ * lives in its extras/ and plugs in through Extras. */
+#ifndef LESSON_H
+#define LESSON_H
+
+#include "inspect.h"
+#include "rasterizer.h"
+#include "render.h"
+
+#define RUN_GO (-1) /* run_load: go on and draw */
+
+typedef struct Run Run;
+
+typedef struct {
+    const LessonFlag *flags; /* the extras' own flags */
+    int n_flags;
+    bool (*choose)(Run *run, Error *err); /* once they are read; false: a usage error */
+} Extras;
+
+typedef struct {
+    const char *program, *purpose;   /* "02_zbuffer"; one line for --help */
+    const char *scene;               /* drawn when no --scene or --obj is given */
+    const Rasterizer *rasterizer;    /* the lesson's depth buffer */
+    DepthRule depth_rule;            /* its words for --trace and --ascii */
+    const Extras *extras;            /* NULL when there are none */
+    void (*report)(const Target *t); /* lines of its own under the summary, or NULL */
+} Lesson;
+
+struct Run {
+    const Lesson *lesson;
+    Options opt;
+    Render render;
+    Target target;
+    Inspection inspection;
+    const Rasterizer *rz;  /* the lesson's, unless an extra chose another */
+    const DepthRule *rule; /* likewise */
+    bool (*draw)(Run *run, Error *err);        /* an extra's way to draw, or NULL */
+    bool (*after_write)(Run *run, Error *err); /* an extra's output, or NULL */
+    char note[512];                            /* extras' lines under the summary */
+    char default_out[64];                      /* "out/<program>.png" */
+    Error err;
+    int status;
+};
+
+int run_load(Run *run, const Lesson *lesson, int argc, char **argv); /* RUN_GO or a status */
+bool run_draw(Run *run);
+bool run_write(Run *run);
+bool run_report(Run *run);
+int run_end(Run *run);
+void run_note(Run *run, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+#endif

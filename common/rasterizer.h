@@ -1,0 +1,48 @@
+/* rasterizer.h: what a lesson's rasterizer is handed, and what it hands back.
+ *
+ * A lesson of the 3-D series (02 on) teaches one thing: how a face becomes
+ * pixels and which pixel keeps which face. The pipeline (render.h) projects
+ * every face corner to the screen and hands the lesson one ScreenFace at a
+ * time; the lesson says, in a Rasterizer, how it clears its depth buffer, how
+ * it draws a face, and how its stored value reads back as view depth d. */
+#ifndef RASTERIZER_H
+#define RASTERIZER_H
+
+#include <stdbool.h>
+
+#include "camera.h"
+#include "mesh.h"
+#include "target.h"
+
+/* One face on the screen; the pointers stay valid while draw_face runs. */
+typedef struct {
+    int face;              /* index of the face in the mesh: --id-out shows face + 1 */
+    int n;                 /* number of corners, >= 3 */
+    const ScreenVertex *v; /* its n corners: x, y in pixels, view depth d */
+    const Tri *tris;       /* its n - 2 triangles, as corner numbers into v */
+    bool convex;           /* a convex polygon: may be drawn whole (lesson 04) */
+} ScreenFace;
+
+/* What draw_face needs besides the target and the face. */
+typedef struct {
+    double near, far; /* the camera's planes: a fragment with d > far is
+                         discarded before its depth test */
+} DrawContext;
+
+/* The lesson's depth buffer, in three functions. */
+typedef struct {
+    void (*clear)(Target *t); /* every pixel: "nothing drawn yet", face NO_FACE */
+    void (*draw_face)(Target *t, const ScreenFace *f, const DrawContext *ctx);
+    /* A stored value back as view depth d (--depth-out, --shade depth); NULL
+     * when the buffer already holds d. */
+    double (*stored_to_depth)(float stored);
+} Rasterizer;
+
+/* True when every corner of f (x, y and d) is a finite number: a corner that
+ * is not has no place on the screen, and draw_face draws nothing of it. */
+bool screen_face_is_finite(const ScreenFace *f);
+
+/* A one-triangle ScreenFace over v[0..2], for tests and tools. */
+ScreenFace screen_triangle(const ScreenVertex v[3], int face);
+
+#endif
