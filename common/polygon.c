@@ -14,6 +14,10 @@ static int sign_of(int64_t v)
     return (v > 0) - (v < 0);
 }
 
+/* Convex on the screen, after snapping (rounded to nearest, as the
+ * rasterizers snap): every turn has the same sign (or none), and y changes
+ * direction at most twice going round, so the polygon is one loop with one
+ * left side and one right side. Corners finite, |x|, |y| < 2^21 pixels. */
 bool convex_on_screen(const ScreenVertex *v, int n, int subpixel_one, int *turn)
 {
     int64_t x[3], y[3]; /* corners i, i + 1, i + 2, snapped */
@@ -72,6 +76,8 @@ static bool draw_clipped_polygon(Target *t, const ScreenVertex *v, int n, int fa
     return true;
 }
 
+/* A face with a corner that is not a finite number in front of the camera
+ * draws nothing. */
 void draw_face_as_polygons(Target *t, const ScreenFace *f, const DrawContext *ctx,
                            DrawPolygonFn draw_polygon)
 {

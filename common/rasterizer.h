@@ -1,10 +1,8 @@
 /* rasterizer.h: what a lesson's rasterizer is handed, and what it hands back.
  *
- * A lesson of the 3-D series (02 on) teaches one thing: how a face becomes
- * pixels and which pixel keeps which face. The pipeline (render.h) projects
- * every face corner to the screen and hands the lesson one ScreenFace at a
- * time; the lesson says, in a Rasterizer, how it clears its depth buffer, how
- * it draws a face, and how its stored value reads back as view depth d. */
+ * The pipeline (render.h) projects every face corner to the screen and hands
+ * the lesson one ScreenFace at a time; the lesson's Rasterizer says how it
+ * clears its depth buffer, draws a face, and reads a stored value back as d. */
 #ifndef RASTERIZER_H
 #define RASTERIZER_H
 
@@ -38,8 +36,8 @@ typedef struct {
     double (*stored_to_depth)(float stored);
 } Rasterizer;
 
-/* True when every corner of f (x, y and d) is a finite number: a corner that
- * is not has no place on the screen, and draw_face draws nothing of it. */
+/* True when every corner's x, y and d is a finite number: draw_face draws
+ * nothing of a face with a corner that is not. */
 bool screen_face_is_finite(const ScreenFace *f);
 
 /* A one-triangle ScreenFace over v[0..2], for tests and tools. */

@@ -1,15 +1,10 @@
 /* target.h: what a lesson draws into, passed explicitly (no globals).
  *
- * depth[]    the value the lesson's depth test keeps per pixel: view depth d in
- *            lessons 02 and 03, 1/d in lesson 04. The lesson clears it
- *            (clear_depth), and face[] with it.
- * face[]     the face that won each pixel, NO_FACE where nothing was drawn.
- *            Colours are resolved from it after drawing (shade.h), so the
- *            rasterizer writes one integer per pixel and no colour.
- * overdraw[] fragments tested per pixel (--overdraw-out).
- *
- * Every fragment that reaches a depth test is reported with target_record(),
- * which counts it and, when its pixel is the traced one, logs it (--trace). */
+ * depth[]    what the lesson's depth test keeps per pixel (d in lessons 02
+ *            and 03, 1/d in 04); the lesson's clear_depth clears it and face[]
+ * face[]     the face that won each pixel, NO_FACE where none did; colours
+ *            come from it after drawing (shade.h)
+ * overdraw[] fragments tested per pixel (--overdraw-out) */
 #ifndef TARGET_H
 #define TARGET_H
 
@@ -39,10 +34,9 @@ void target_free(Target *t);
 /* Trace pixel (x, y) from now on (x, y inside the target). */
 void target_trace_pixel(Target *t, int x, int y);
 
-/* Called by a lesson's depth test for every fragment it tests at pixel i.
- * Inline with external linkage (target.c holds its one external definition),
- * not static, so that a lesson's own inline depth_test may call it: clang
- * refuses a static function inside an inline function with external linkage. */
+/* Called by a lesson's depth test for every fragment it tests at pixel i:
+ * counted, and logged when i is the traced pixel (--trace). Not static: a
+ * lesson's inline depth_test calls it (target.c has its external definition). */
 inline void target_record(Target *t, size_t i, int face, float value, float stored,
                                  bool passed)
 {

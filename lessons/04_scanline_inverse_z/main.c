@@ -2,10 +2,8 @@
  *
  * The outline of the program. What this lesson teaches is in scanline.c:
  * clear the buffer of 1/d to 0, then fill every face scanline by scanline,
- * keeping per pixel the largest 1/d. Everything around it (the command line,
- * the scenes, the pictures, the tools that watch the depth test) is common/,
- * reached through lesson.h. The report ends with the nearest surface at the
- * centre of the screen: "front object detection". */
+ * keeping per pixel the largest 1/d. Everything around it is common/, reached
+ * through lesson.h. The report ends with "front object detection". */
 #include <math.h>
 #include <stdio.h>
 

@@ -75,12 +75,8 @@ void clear_depth(Target *t)
 inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 {
     float stored = t->depth[i];
-    /* SOLUTION BEGIN: the reversed test: the buffer holds 1/d, cleared to
-     * 0, so nearer means larger. The fragment wins when inv_d > stored (a
-     * tie keeps the first); report every test with target_record, and keep
-     * the winner's 1/d and face. */
-    /* Nearer means larger 1/d: the comparison is reversed because the stored
-     * value is reversed. Strict, so that a tie keeps the first fragment. */
+    /* SOLUTION BEGIN: the test for a buffer of 1/d (a tie keeps the first);
+     * report it with target_record, keep the winner's 1/d and face. */
     bool passed = inv_d > stored;
     target_record(t, i, face, inv_d, stored, passed);
     if (passed) {
@@ -101,12 +97,8 @@ inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 bool edge_setup(Edge *e, int64_t ax, int64_t ay, double inv_a, int64_t bx, int64_t by,
                 double inv_b, int y_first)
 {
-    /* SOLUTION BEGIN: set up the walk down edge a->b, from the first row
-     * whose centre is at or below both a and y_first: where the edge
-     * crosses that row (x_pixel, the first pixel centre at or right of it,
-     * and rem / den, how far right of the edge that centre is), how far it
-     * moves per row (step_pixel, step_rem), where it ends (y_end), and 1/d
-     * there and per row. False when it crosses no row centre. */
+    /* SOLUTION BEGIN: fill in every field of Edge (scanline.h) for the
+     * first row at or below both a and y_first. */
     int64_t dx = bx - ax, dy = by - ay;
     if (dy <= 0)
         return false; /* a horizontal edge crosses no row centre */
@@ -146,8 +138,7 @@ bool edge_setup(Edge *e, int64_t ax, int64_t ay, double inv_a, int64_t bx, int64
 /* One scanline down: one addition for x (plus a carry), one for 1/d. */
 void edge_step(Edge *e)
 {
-    /* SOLUTION BEGIN: one row down the edge: x by step_pixel, and one pixel
-     * more when the remainder runs out; 1/d by its step. */
+    /* SOLUTION BEGIN: x and 1/d one row further down the edge. */
     e->x_pixel += e->step_pixel;
     e->rem -= e->step_rem;
     if (e->rem < 0) { /* the fraction ran out: the edge moved one pixel more */
@@ -166,10 +157,7 @@ void edge_step(Edge *e)
  * pixel; a fragment beyond the far plane (1/d < inv_far) is not tested. */
 void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, double inv_far)
 {
-    /* SOLUTION BEGIN: fill row y from the left edge to the right edge,
-     * clipped to the screen: 1/d at the first pixel centre, then one
-     * addition per pixel; discard a fragment beyond the far plane (1/d <
-     * inv_far), test the others. */
+    /* SOLUTION BEGIN: the span, one addition of 1/d per pixel. */
     int64_t x_first = left->x_pixel < 0 ? 0 : left->x_pixel;
     int64_t x_stop = right->x_pixel > t->width ? t->width : right->x_pixel;
     if (x_first >= x_stop)
