@@ -20,13 +20,12 @@
 
 #include "error.h"
 #include "scene.h"
+#include "shade.h"
 #include "vecmath.h"
 
 #define SERIES_VERSION "0.1.0"
 #define CLI_CONTINUE (-1)
 #define CLI_MAX_EXTRA 16
-
-typedef enum { SHADE_FLAT, SHADE_ID, SHADE_DEPTH } ShadeMode;
 
 /* Groups of shared flags; a lesson names the groups it takes. --out, --width,
  * --height, --help and --version are always taken. */

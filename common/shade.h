@@ -18,10 +18,12 @@
 #include <stdint.h>
 
 #include "camera.h"
-#include "cli.h"
 #include "error.h"
 #include "image.h"
 #include "mesh.h"
+
+/* What a pixel's colour shows (--shade flat|id|depth): the three modes above. */
+typedef enum { SHADE_FLAT, SHADE_ID, SHADE_DEPTH } ShadeMode;
 
 #define SHADE_AMBIENT 0.25
 #define SHADE_DIFFUSE 0.75
