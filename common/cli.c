@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "ascii.h"
+#include "camera.h"
 #include "compare.h"
 #include "file.h"
 #include "image.h"
@@ -26,10 +27,6 @@
 #define DEFAULT_NEAR 0.1
 #define DEFAULT_FAR 100.0
 
-#define FOVY_MAX 180.0
-/* up is parallel to the view direction when the sine of the angle between them
- * is below this: the camera's right axis (f x up) would be noise. */
-#define PARALLEL_SINE_MIN 1e-6
 /* Room for the name of --out's diff picture (a longer one is not checked). */
 #define PATH_TEXT_MAX 4096
 /* A value quoted in a message is cut to this many characters. */
@@ -124,15 +121,6 @@ static const char *quoted(const char *s, char buf[QUOTE_MAX + 4])
     for (; s[n] != '\0' && n < QUOTE_MAX; n++)
         buf[n] = iscntrl((unsigned char)s[n]) ? '?' : s[n];
     strcpy(buf + n, s[n] != '\0' ? "..." : "");
-    return buf;
-}
-
-/* Shortest of %.15g / %.17g that reads back as v: 0.1 prints as 0.1. */
-static const char *number_text(double v, char buf[32])
-{
-    snprintf(buf, 32, "%.15g", v);
-    if (strtod(buf, NULL) != v)
-        snprintf(buf, 32, "%.17g", v);
     return buf;
 }
 
@@ -672,66 +660,9 @@ static void fill_camera(Options *o, const SceneInfo *scene)
         o->far = scene ? scene->far : DEFAULT_FAR;
 }
 
-/* 0 < fovy < 180, 0 < near < far. */
-static bool check_lens(const Options *o, Error *err)
-{
-    char a[32], b[32];
-    if (!(o->fovy > 0 && o->fovy < FOVY_MAX))
-        return error_set(err, "--fovy: %s is out of range (0 < fovy < 180 degrees)",
-                         number_text(o->fovy, a));
-    if (!(o->near > 0))
-        return error_set(err, "--near: %s is out of range (near must be greater than 0)",
-                         number_text(o->near, a));
-    if (!(o->far > o->near))
-        return error_set(err, "--far: %s is out of range (far must be greater than near, %s)",
-                         number_text(o->far, a), number_text(o->near, b));
-    return true;
-}
-
-/* eye != target, up not parallel to target - eye: otherwise look_at has no
- * direction to look in, or no way to tell right from left. */
-static bool check_orientation(const Options *o, Error *err)
-{
-    Vec3 dir = vec3_sub(o->target, o->eye);
-    double dir_len = vec3_length(dir), up_len = vec3_length(o->up);
-    if (dir_len == 0)
-        return error_set(err, "--eye and --target are the same point");
-    if (!isfinite(dir_len))
-        return error_set(err, "--eye and --target are too far apart");
-    if (up_len == 0)
-        return error_set(err, "--up is the zero vector");
-    if (!isfinite(up_len))
-        return error_set(err, "--up is too long");
-    /* |dir x up| = |dir| |up| sin(angle) */
-    double sine = vec3_length(vec3_cross(vec3_scale(dir, 1 / dir_len),
-                                         vec3_scale(o->up, 1 / up_len)));
-    if (!(sine >= PARALLEL_SINE_MIN))
-        return error_set(err, "--up is parallel to the view direction from --eye to --target");
-    return true;
-}
-
-static bool matrix_is_finite(Mat4 m)
-{
-    for (int r = 0; r < 4; r++)
-        for (int c = 0; c < 4; c++)
-            if (!isfinite(m.m[r][c]))
-                return false;
-    return true;
-}
-
-/* Extreme but finite values can still overflow while the matrices are built. */
-static bool check_matrices(const Options *o, Error *err)
-{
-    if (!matrix_is_finite(look_at(o->eye, o->target, o->up)))
-        return error_set(err, "--eye and --target are too far from the origin");
-    double aspect = (double)o->width / o->height;
-    if (!matrix_is_finite(perspective(o->fovy, aspect, o->near, o->far)))
-        return error_set(err, "--fovy, --near and --far give a projection too large to compute");
-    return true;
-}
-
 bool cli_resolve_camera(Options *opt, const SceneInfo *scene, Error *err)
 {
     fill_camera(opt, scene);
-    return check_lens(opt, err) && check_orientation(opt, err) && check_matrices(opt, err);
+    return camera_check(opt->eye, opt->target, opt->up, opt->fovy, opt->near, opt->far,
+                        opt->width, opt->height, err);
 }

@@ -96,8 +96,9 @@ int cli_parse_quiet(const LessonCli *spec, int argc, char **argv, Options *opt, 
 void cli_print_help(const LessonCli *spec, FILE *out);
 
 /* Camera flags not given on the command line are taken from the scene; then the
- * camera is checked: eye != target, up not parallel to the view direction,
- * 0 < near < far, 0 < fovy < 180. False with err set otherwise (a usage error). */
+ * camera is checked by camera_check (camera.h): eye != target, up not parallel to
+ * the view direction, 0 < near < far, 0 < fovy < 180. False with err set
+ * otherwise (a usage error). */
 bool cli_resolve_camera(Options *opt, const SceneInfo *scene, Error *err);
 
 /* Value parsers, for the lessons' own flags too. Each rejects trailing junk,
