@@ -12,8 +12,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const double PI = 3.14159265358979323846;
-
 /* ---- Building blocks ---------------------------------------------------- */
 
 static int material(Mesh *m, const char *name, double r, double g, double b, Error *err)

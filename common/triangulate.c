@@ -29,8 +29,6 @@
  * face, however hostile, takes more than about a second. */
 #define EAR_WORK_FACTOR 8
 
-static const double PI = 3.14159265358979323846;
-
 typedef struct { double u, v; } Point2;
 
 /* Newell's method: the sum over the edges of a polygon's projected areas.

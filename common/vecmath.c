@@ -3,8 +3,6 @@
 
 #include <math.h>
 
-#define PI 3.14159265358979323846
-
 Vec2 vec2(double x, double y)
 {
     Vec2 v = {x, y};

@@ -7,6 +7,9 @@
 #ifndef VECMATH_H
 #define VECMATH_H
 
+/* pi to more digits than a double holds: the one definition every file uses. */
+#define PI 3.14159265358979323846
+
 typedef struct { double x, y; } Vec2;
 typedef struct { double x, y, z; } Vec3;
 typedef struct { double x, y, z, w; } Vec4;
