@@ -3,12 +3,6 @@
 
 #include <math.h>
 
-Vec2 vec2(double x, double y)
-{
-    Vec2 v = {x, y};
-    return v;
-}
-
 Vec3 vec3(double x, double y, double z)
 {
     Vec3 v = {x, y, z};

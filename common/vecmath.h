@@ -10,12 +10,10 @@
 /* pi to more digits than a double holds: the one definition every file uses. */
 #define PI 3.14159265358979323846
 
-typedef struct { double x, y; } Vec2;
 typedef struct { double x, y, z; } Vec3;
 typedef struct { double x, y, z, w; } Vec4;
 typedef struct { double m[4][4]; } Mat4;
 
-Vec2 vec2(double x, double y);
 Vec3 vec3(double x, double y, double z);
 Vec4 vec4(double x, double y, double z, double w);
 
