@@ -27,8 +27,6 @@
 #define DEFAULT_NEAR 0.1
 #define DEFAULT_FAR 100.0
 
-/* Room for the name of --out's diff picture (a longer one is not checked). */
-#define PATH_TEXT_MAX 4096
 /* A value quoted in a message is cut to this many characters. */
 #define QUOTE_MAX 48
 
@@ -418,7 +416,8 @@ static bool check_ascii(Parser *p)
 }
 
 /* The diff picture of --compare is written next to --out: it may not be REF
- * itself (check_paths sees to --out), or the reference would be overwritten. */
+ * itself (check_paths sees to --out), or the reference would be overwritten.
+ * A diff name that does not fit in PATH_TEXT_MAX is not checked. */
 static bool check_compare(Parser *p)
 {
     const Options *o = p->opt;
