@@ -203,6 +203,8 @@ bool parse_vec3(const char *flag, const char *s, Vec3 *out, Error *err)
 
 /* ---- Reading the command line ----------------------------------------------- */
 
+static void print_help(const LessonCli *spec, FILE *out); /* --help, below */
+
 typedef struct {
     const LessonCli *spec;
     Options *opt;
@@ -475,7 +477,7 @@ static int read_argument(Parser *p)
 
     int id = shared_flag_id(arg);
     if (id == FLAG_HELP) {
-        cli_print_help(spec, stdout);
+        print_help(spec, stdout);
         return EXIT_OK;
     }
     if (id == FLAG_VERSION) {
@@ -595,7 +597,9 @@ static const char *default_text(const LessonCli *spec, SharedFlagId id, char buf
     return buf;
 }
 
-void cli_print_help(const LessonCli *spec, FILE *out)
+/* The --help text: usage, the lesson's purpose, the flags it takes (its own
+ * included), the built-in scenes when it takes --scene, the exit statuses. */
+static void print_help(const LessonCli *spec, FILE *out)
 {
     int column = flag_column_width(spec);
     char buf[160];

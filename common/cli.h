@@ -91,10 +91,6 @@ int cli_parse(const LessonCli *spec, int argc, char **argv, Options *opt);
  * for callers that print it themselves. --help and --version still print on stdout. */
 int cli_parse_quiet(const LessonCli *spec, int argc, char **argv, Options *opt, Error *err);
 
-/* The --help text: usage, the lesson's purpose, the flags it takes (its own
- * included), the built-in scenes when it takes --scene, the exit statuses. */
-void cli_print_help(const LessonCli *spec, FILE *out);
-
 /* Camera flags not given on the command line are taken from the scene; then the
  * camera is checked by camera_check (camera.h): eye != target, up not parallel to
  * the view direction, 0 < near < far, 0 < fovy < 180. False with err set
