@@ -178,7 +178,8 @@ static double inverse(float stored)
     return 1.0 / stored;
 }
 
-static const Rasterizer RECORDER = {"recorder", 0.0f, record_face, inverse};
+static const Rasterizer RECORDER = {.program = "recorder", .clear_value = 0.0f,
+                                    .draw_face = record_face, .stored_to_depth = inverse};
 
 static int hook_calls;
 static bool count_hook(void *data, const Target *t, const ScreenFace *f, Error *err)
