@@ -31,7 +31,7 @@ Vec4 mat4_mul_vec4(Mat4 m, Vec4 v); /* m * v */
 
 /* gluLookAt: camera at eye looking at target, up roughly up. The camera looks
  * down its own -Z axis, +Y up, +X right. Callers check that eye != target and
- * that up is not parallel to target - eye (cli.c does). */
+ * that up is not parallel to target - eye (camera_check in camera.h does). */
 Mat4 look_at(Vec3 eye, Vec3 target, Vec3 up);
 
 /* gluPerspective: fovy in degrees, aspect = width / height, 0 < near < far.
