@@ -10,6 +10,9 @@
 #ifndef CAMERA_H
 #define CAMERA_H
 
+#include <stdbool.h>
+
+#include "error.h"
 #include "vecmath.h"
 
 typedef struct {
@@ -23,6 +26,12 @@ typedef struct {
     double d;    /* view depth, positive in front of the camera */
 } ScreenVertex;
 
+/* Whether camera_init can build a camera from these values: eye != target, up
+ * not parallel to the view direction, 0 < near < far, 0 < fovy < 180, and
+ * matrices that stay finite. False with err set otherwise; the message names
+ * the command-line flag that gives the value (--eye, --up, --fovy, ...). */
+bool camera_check(Vec3 eye, Vec3 target, Vec3 up, double fovy_degrees, double near,
+                  double far, int width, int height, Error *err);
 void camera_init(Camera *c, Vec3 eye, Vec3 target, Vec3 up, double fovy_degrees,
                  double near, double far, int width, int height);
 Vec3 camera_to_view(const Camera *c, Vec3 world);

@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "ascii.h"
+#include "camera.h"
 #include "compare.h"
 #include "file.h"
 #include "image.h"
@@ -26,12 +27,6 @@
 #define DEFAULT_NEAR 0.1
 #define DEFAULT_FAR 100.0
 
-#define FOVY_MAX 180.0
-/* up is parallel to the view direction when the sine of the angle between them
- * is below this: the camera's right axis (f x up) would be noise. */
-#define PARALLEL_SINE_MIN 1e-6
-/* Room for the name of --out's diff picture (a longer one is not checked). */
-#define PATH_TEXT_MAX 4096
 /* A value quoted in a message is cut to this many characters. */
 #define QUOTE_MAX 48
 
@@ -53,32 +48,48 @@ typedef struct {
 } SharedFlag;
 
 static const SharedFlag SHARED_FLAGS[SHARED_FLAG_COUNT] = {
-    [FLAG_OUT] = {"--out", 0, "FILE.png", "where the picture goes"},
-    [FLAG_WIDTH] = {"--width", 0, "N", "image width in pixels, 1 to 16384"},
-    [FLAG_HEIGHT] = {"--height", 0, "N", "image height in pixels, 1 to 16384"},
-    [FLAG_SCENE] = {"--scene", CLI_SCENE, "NAME", "a built-in scene to draw, listed below"},
-    [FLAG_OBJ] = {"--obj", CLI_SCENE, "FILE.obj", "draw the mesh of an OBJ file instead"},
-    [FLAG_EYE] = {"--eye", CLI_CAMERA, "X,Y,Z", "where the camera is"},
-    [FLAG_TARGET] = {"--target", CLI_CAMERA, "X,Y,Z", "the point it looks at"},
-    [FLAG_UP] = {"--up", CLI_CAMERA, "X,Y,Z", "which way is up on the screen"},
-    [FLAG_FOVY] = {"--fovy", CLI_CAMERA, "DEG", "vertical field of view, between 0 and 180"},
-    [FLAG_NEAR] = {"--near", CLI_CAMERA, "N", "distance of the near plane, above 0"},
-    [FLAG_FAR] = {"--far", CLI_CAMERA, "F", "distance of the far plane, beyond the near one"},
-    [FLAG_SHADE] = {"--shade", CLI_SHADE, "MODE", "flat, id (face index + 1) or depth"},
-    [FLAG_DEPTH_OUT] = {"--depth-out", CLI_DEPTH_OUT, "FILE.pfm",
-                        "also write the depth buffer, as view depth d"},
-    [FLAG_OVERDRAW_OUT] = {"--overdraw-out", CLI_OVERDRAW_OUT, "FILE.pgm",
-                           "also write how many fragments each pixel tested"},
-    [FLAG_TRACE] = {"--trace", CLI_TRACE, "X,Y", "log every fragment tested at pixel (X, Y)"},
-    [FLAG_ASCII] = {"--ascii", CLI_ASCII, NULL,
-                    "also print the depth buffer as digits, 0 = nearest (up to 120x60)"},
-    [FLAG_COMPARE] = {"--compare", CLI_COMPARE, "REF.png",
-                      "compare the picture with REF.png, exit 3 if they differ; the diff "
-                      "picture goes next to --out as NAME.diff.png"},
-    [FLAG_STEPS] = {"--steps", CLI_STEPS, "DIR",
-                    "save step_NNNN.png and step_NNNN_depth.png into DIR after every face"},
-    [FLAG_HELP] = {"--help", 0, NULL, "print this help and exit"},
-    [FLAG_VERSION] = {"--version", 0, NULL, "print the version and exit"},
+    [FLAG_OUT] = {.flag = "--out", .group = 0, .metavar = "FILE.png",
+                  .help = "where the picture goes"},
+    [FLAG_WIDTH] = {.flag = "--width", .group = 0, .metavar = "N",
+                    .help = "image width in pixels, 1 to 16384"},
+    [FLAG_HEIGHT] = {.flag = "--height", .group = 0, .metavar = "N",
+                     .help = "image height in pixels, 1 to 16384"},
+    [FLAG_SCENE] = {.flag = "--scene", .group = CLI_SCENE, .metavar = "NAME",
+                    .help = "a built-in scene to draw, listed below"},
+    [FLAG_OBJ] = {.flag = "--obj", .group = CLI_SCENE, .metavar = "FILE.obj",
+                  .help = "draw the mesh of an OBJ file instead"},
+    [FLAG_EYE] = {.flag = "--eye", .group = CLI_CAMERA, .metavar = "X,Y,Z",
+                  .help = "where the camera is"},
+    [FLAG_TARGET] = {.flag = "--target", .group = CLI_CAMERA, .metavar = "X,Y,Z",
+                     .help = "the point it looks at"},
+    [FLAG_UP] = {.flag = "--up", .group = CLI_CAMERA, .metavar = "X,Y,Z",
+                 .help = "which way is up on the screen"},
+    [FLAG_FOVY] = {.flag = "--fovy", .group = CLI_CAMERA, .metavar = "DEG",
+                   .help = "vertical field of view, between 0 and 180"},
+    [FLAG_NEAR] = {.flag = "--near", .group = CLI_CAMERA, .metavar = "N",
+                   .help = "distance of the near plane, above 0"},
+    [FLAG_FAR] = {.flag = "--far", .group = CLI_CAMERA, .metavar = "F",
+                  .help = "distance of the far plane, beyond the near one"},
+    [FLAG_SHADE] = {.flag = "--shade", .group = CLI_SHADE, .metavar = "MODE",
+                    .help = "flat, id (face index + 1) or depth"},
+    [FLAG_DEPTH_OUT] = {.flag = "--depth-out", .group = CLI_DEPTH_OUT, .metavar = "FILE.pfm",
+                        .help = "also write the depth buffer, as view depth d"},
+    [FLAG_OVERDRAW_OUT] = {.flag = "--overdraw-out", .group = CLI_OVERDRAW_OUT,
+                           .metavar = "FILE.pgm",
+                           .help = "also write how many fragments each pixel tested"},
+    [FLAG_TRACE] = {.flag = "--trace", .group = CLI_TRACE, .metavar = "X,Y",
+                    .help = "log every fragment tested at pixel (X, Y)"},
+    [FLAG_ASCII] = {.flag = "--ascii", .group = CLI_ASCII, .metavar = NULL,
+                    .help = "also print the depth buffer as digits, 0 = nearest (up to 120x60)"},
+    [FLAG_COMPARE] = {.flag = "--compare", .group = CLI_COMPARE, .metavar = "REF.png",
+                      .help = "compare the picture with REF.png, exit 3 if they differ; the diff "
+                              "picture goes next to --out as NAME.diff.png"},
+    [FLAG_STEPS] = {.flag = "--steps", .group = CLI_STEPS, .metavar = "DIR",
+                    .help = "save step_NNNN.png and step_NNNN_depth.png into DIR after every face"},
+    [FLAG_HELP] = {.flag = "--help", .group = 0, .metavar = NULL,
+                   .help = "print this help and exit"},
+    [FLAG_VERSION] = {.flag = "--version", .group = 0, .metavar = NULL,
+                      .help = "print the version and exit"},
 };
 
 /* Why a lesson that does not take a group's flags refuses them. */
@@ -124,15 +135,6 @@ static const char *quoted(const char *s, char buf[QUOTE_MAX + 4])
     for (; s[n] != '\0' && n < QUOTE_MAX; n++)
         buf[n] = iscntrl((unsigned char)s[n]) ? '?' : s[n];
     strcpy(buf + n, s[n] != '\0' ? "..." : "");
-    return buf;
-}
-
-/* Shortest of %.15g / %.17g that reads back as v: 0.1 prints as 0.1. */
-static const char *number_text(double v, char buf[32])
-{
-    snprintf(buf, 32, "%.15g", v);
-    if (strtod(buf, NULL) != v)
-        snprintf(buf, 32, "%.17g", v);
     return buf;
 }
 
@@ -216,6 +218,8 @@ bool parse_vec3(const char *flag, const char *s, Vec3 *out, Error *err)
 }
 
 /* ---- Reading the command line ----------------------------------------------- */
+
+static void print_help(const LessonCli *spec, FILE *out); /* --help, below */
 
 typedef struct {
     const LessonCli *spec;
@@ -430,7 +434,8 @@ static bool check_ascii(Parser *p)
 }
 
 /* The diff picture of --compare is written next to --out: it may not be REF
- * itself (check_paths sees to --out), or the reference would be overwritten. */
+ * itself (check_paths sees to --out), or the reference would be overwritten.
+ * A diff name that does not fit in PATH_TEXT_MAX is not checked. */
 static bool check_compare(Parser *p)
 {
     const Options *o = p->opt;
@@ -488,7 +493,7 @@ static int read_argument(Parser *p)
 
     int id = shared_flag_id(arg);
     if (id == FLAG_HELP) {
-        cli_print_help(spec, stdout);
+        print_help(spec, stdout);
         return EXIT_OK;
     }
     if (id == FLAG_VERSION) {
@@ -608,7 +613,9 @@ static const char *default_text(const LessonCli *spec, SharedFlagId id, char buf
     return buf;
 }
 
-void cli_print_help(const LessonCli *spec, FILE *out)
+/* The --help text: usage, the lesson's purpose, the flags it takes (its own
+ * included), the built-in scenes when it takes --scene, the exit statuses. */
+static void print_help(const LessonCli *spec, FILE *out)
 {
     int column = flag_column_width(spec);
     char buf[160];
@@ -672,66 +679,9 @@ static void fill_camera(Options *o, const SceneInfo *scene)
         o->far = scene ? scene->far : DEFAULT_FAR;
 }
 
-/* 0 < fovy < 180, 0 < near < far. */
-static bool check_lens(const Options *o, Error *err)
-{
-    char a[32], b[32];
-    if (!(o->fovy > 0 && o->fovy < FOVY_MAX))
-        return error_set(err, "--fovy: %s is out of range (0 < fovy < 180 degrees)",
-                         number_text(o->fovy, a));
-    if (!(o->near > 0))
-        return error_set(err, "--near: %s is out of range (near must be greater than 0)",
-                         number_text(o->near, a));
-    if (!(o->far > o->near))
-        return error_set(err, "--far: %s is out of range (far must be greater than near, %s)",
-                         number_text(o->far, a), number_text(o->near, b));
-    return true;
-}
-
-/* eye != target, up not parallel to target - eye: otherwise look_at has no
- * direction to look in, or no way to tell right from left. */
-static bool check_orientation(const Options *o, Error *err)
-{
-    Vec3 dir = vec3_sub(o->target, o->eye);
-    double dir_len = vec3_length(dir), up_len = vec3_length(o->up);
-    if (dir_len == 0)
-        return error_set(err, "--eye and --target are the same point");
-    if (!isfinite(dir_len))
-        return error_set(err, "--eye and --target are too far apart");
-    if (up_len == 0)
-        return error_set(err, "--up is the zero vector");
-    if (!isfinite(up_len))
-        return error_set(err, "--up is too long");
-    /* |dir x up| = |dir| |up| sin(angle) */
-    double sine = vec3_length(vec3_cross(vec3_scale(dir, 1 / dir_len),
-                                         vec3_scale(o->up, 1 / up_len)));
-    if (!(sine >= PARALLEL_SINE_MIN))
-        return error_set(err, "--up is parallel to the view direction from --eye to --target");
-    return true;
-}
-
-static bool matrix_is_finite(Mat4 m)
-{
-    for (int r = 0; r < 4; r++)
-        for (int c = 0; c < 4; c++)
-            if (!isfinite(m.m[r][c]))
-                return false;
-    return true;
-}
-
-/* Extreme but finite values can still overflow while the matrices are built. */
-static bool check_matrices(const Options *o, Error *err)
-{
-    if (!matrix_is_finite(look_at(o->eye, o->target, o->up)))
-        return error_set(err, "--eye and --target are too far from the origin");
-    double aspect = (double)o->width / o->height;
-    if (!matrix_is_finite(perspective(o->fovy, aspect, o->near, o->far)))
-        return error_set(err, "--fovy, --near and --far give a projection too large to compute");
-    return true;
-}
-
 bool cli_resolve_camera(Options *opt, const SceneInfo *scene, Error *err)
 {
     fill_camera(opt, scene);
-    return check_lens(opt, err) && check_orientation(opt, err) && check_matrices(opt, err);
+    return camera_check(opt->eye, opt->target, opt->up, opt->fovy, opt->near, opt->far,
+                        opt->width, opt->height, err);
 }

@@ -20,13 +20,12 @@
 
 #include "error.h"
 #include "scene.h"
+#include "shade.h"
 #include "vecmath.h"
 
 #define SERIES_VERSION "0.1.0"
 #define CLI_CONTINUE (-1)
 #define CLI_MAX_EXTRA 16
-
-typedef enum { SHADE_FLAT, SHADE_ID, SHADE_DEPTH } ShadeMode;
 
 /* Groups of shared flags; a lesson names the groups it takes. --out, --width,
  * --height, --help and --version are always taken. */
@@ -92,13 +91,10 @@ int cli_parse(const LessonCli *spec, int argc, char **argv, Options *opt);
  * for callers that print it themselves. --help and --version still print on stdout. */
 int cli_parse_quiet(const LessonCli *spec, int argc, char **argv, Options *opt, Error *err);
 
-/* The --help text: usage, the lesson's purpose, the flags it takes (its own
- * included), the built-in scenes when it takes --scene, the exit statuses. */
-void cli_print_help(const LessonCli *spec, FILE *out);
-
 /* Camera flags not given on the command line are taken from the scene; then the
- * camera is checked: eye != target, up not parallel to the view direction,
- * 0 < near < far, 0 < fovy < 180. False with err set otherwise (a usage error). */
+ * camera is checked by camera_check (camera.h): eye != target, up not parallel to
+ * the view direction, 0 < near < far, 0 < fovy < 180. False with err set
+ * otherwise (a usage error). */
 bool cli_resolve_camera(Options *opt, const SceneInfo *scene, Error *err);
 
 /* Value parsers, for the lessons' own flags too. Each rejects trailing junk,

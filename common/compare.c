@@ -28,8 +28,10 @@ static void print_result(FILE *out, const ImageDiff *d)
             d->x0, d->y0, d->x1, d->y1);
 }
 
-int compare_with_reference(FILE *out, const Image *picture, const char *ref_path,
-                           const char *diff_path, Error *err)
+/* Compares picture with the PNG at ref_path, prints the line on out and writes
+ * the diff picture to diff_path. */
+static int compare_with_reference(FILE *out, const Image *picture, const char *ref_path,
+                                  const char *diff_path, Error *err)
 {
     Image ref, diff;
     Error why;

@@ -27,11 +27,7 @@
 bool compare_diff_path(const char *out_path, char *buf, size_t size);
 
 /* Compares picture (this run's) with the PNG at ref_path, prints the line on
- * out and writes the diff picture to diff_path. */
-int compare_with_reference(FILE *out, const Image *picture, const char *ref_path,
-                           const char *diff_path, Error *err);
-
-/* compare_diff_path of out_path, then compare_with_reference. */
+ * out and writes the diff picture beside out_path (compare_diff_path). */
 int compare_picture(FILE *out, const Image *picture, const char *ref_path, const char *out_path,
                     Error *err);
 

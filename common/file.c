@@ -73,13 +73,12 @@ static bool open_direct(AtomicFile *f, const char *path, Error *err)
     return true;
 }
 
-#define LINK_TARGET_MAX 4096
 #define LINK_HOPS_MAX 40 /* as Linux: a longer chain is surely a loop */
 
 /* "dir/link" pointing to "name" -> "dir/name"; an absolute target as it is. */
 static char *follow_link_once(const char *link_path)
 {
-    char target[LINK_TARGET_MAX];
+    char target[PATH_TEXT_MAX];
     ssize_t n = readlink(link_path, target, sizeof target - 1);
     if (n < 0 || (size_t)n == sizeof target - 1)
         return NULL;

@@ -18,6 +18,11 @@
 
 #include "error.h"
 
+/* Room for a path and its NUL, for the few places that keep one in a fixed
+ * buffer (a name built from --out, a symbolic link's target). Linux's PATH_MAX;
+ * a longer path is refused or left unchecked where the buffer is used. */
+#define PATH_TEXT_MAX 4096
+
 typedef struct {
     FILE *fp;           /* write here */
     char *path;         /* the final name */

@@ -111,10 +111,14 @@ int guard_band_clip(const ScreenVertex *in, int n, int width, int height,
         return n;
     }
     const BandSide sides[4] = {
-        {false, -1, -GUARD_BAND},                  /* left:   x >= -GUARD_BAND */
-        {false, +1, width + (double)GUARD_BAND},   /* right:  x <= W + GUARD_BAND */
-        {true, -1, -GUARD_BAND},                   /* top:    y >= -GUARD_BAND */
-        {true, +1, height + (double)GUARD_BAND},   /* bottom: y <= H + GUARD_BAND */
+        /* left:   x >= -GUARD_BAND */
+        {.along_y = false, .sign = -1, .limit = -GUARD_BAND},
+        /* right:  x <= W + GUARD_BAND */
+        {.along_y = false, .sign = +1, .limit = width + (double)GUARD_BAND},
+        /* top:    y >= -GUARD_BAND */
+        {.along_y = true, .sign = -1, .limit = -GUARD_BAND},
+        /* bottom: y <= H + GUARD_BAND */
+        {.along_y = true, .sign = +1, .limit = height + (double)GUARD_BAND},
     };
     ScreenVertex small[GUARD_BAND_MAX_OUT(SMALL_POLYGON)];
     ScreenVertex *scratch = small;

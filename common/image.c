@@ -345,7 +345,8 @@ bool image_compare(const Image *a, const Image *b, int channel_tolerance,
     if (diff && !image_init(diff, b->width, b->height, err))
         return false;
 
-    ImageDiff r = {0, 0, -1, -1, -1, -1};
+    ImageDiff r = {.differing = 0, .max_channel_diff = 0,
+                   .x0 = -1, .y0 = -1, .x1 = -1, .y1 = -1}; /* no box yet */
     for (int y = 0; y < a->height; y++) {
         for (int x = 0; x < a->width; x++) {
             Rgb ca = image_get(a, x, y), cb = image_get(b, x, y);

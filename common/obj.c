@@ -287,7 +287,7 @@ static bool index_materials(ObjReader *r, Error *err)
     if (!r->by_name)
         return error_set(err, "out of memory");
     for (int i = 0; i < r->m->nmaterials; i++)
-        r->by_name[i] = (NamedMaterial){r->m->materials[i].name, i};
+        r->by_name[i] = (NamedMaterial){.name = r->m->materials[i].name, .index = i};
     r->nby_name = r->m->nmaterials;
     qsort(r->by_name, (size_t)r->nby_name, sizeof *r->by_name, compare_named);
     return true;
@@ -338,7 +338,7 @@ static bool read_kd(ObjReader *r, const Lines *l, char *cursor, int material, Er
 static bool read_mtl_text(ObjReader *r, const char *text, size_t len, const char *name,
                           Error *err)
 {
-    Lines l = {text, len, 0, name, 0, NULL, 0};
+    Lines l = {.text = text, .len = len, .name = name};
     int material = -1, got;
     bool ok = true;
     while (ok && (got = next_line(&l, err)) > 0) {
@@ -579,7 +579,7 @@ bool mesh_parse_obj(Mesh *m, const char *text, size_t len, const char *name,
     ObjReader r;
     memset(&r, 0, sizeof r);
     r.m = &fresh;
-    r.lines = (Lines){text, len, 0, name, 0, NULL, 0};
+    r.lines = (Lines){.text = text, .len = len, .name = name};
     r.mtl_dir = mtl_dir;
     r.material = -1;
     r.face = malloc(sizeof *r.face * MESH_MAX_FACE_VERTICES);

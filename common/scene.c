@@ -12,8 +12,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-static const double PI = 3.14159265358979323846;
-
 /* ---- Building blocks ---------------------------------------------------- */
 
 static int material(Mesh *m, const char *name, double r, double g, double b, Error *err)
@@ -430,18 +428,30 @@ static bool build_knot(Mesh *m, Error *err)
 /* ---- The registry --------------------------------------------------------- */
 
 static const SceneInfo SCENES[] = {
-    {"triangles3", "three triangles that overlap in a cycle: no back-to-front order exists",
-     build_triangles3, {0, 0, 10}, {0, 0, 0}, {0, 1, 0}, 45, 1, 100},
-    {"interpenetrate", "two cards that pass through each other in an X",
-     build_interpenetrate, {1.0, 1.2, 4.0}, {0, 0, 0}, {0, 1, 0}, 45, 0.5, 50},
-    {"cubes", "three cubes cutting into each other and into the floor",
-     build_cubes, {3.5, 4.0, 5.5}, {0.3, 0.5, 0}, {0, 1, 0}, 45, 1, 50},
-    {"grazing", "two long strips crossing at under a degree, over d = 1.5 to 100",
-     build_grazing, {0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 45, 0.5, 150},
-    {"walls", "a corridor of walls, pillars and a doorway, 1990s style",
-     build_walls, {0, 1.6, 1.0}, {0, 1.4, -20}, {0, 1, 0}, 60, 0.5, 100},
-    {"knot", "a (2,3) torus knot tube of 3072 quads",
-     build_knot, {0, -5.5, 8.5}, {0, 0, 0}, {0, 1, 0}, 45, 1, 50},
+    {.name = "triangles3", .build = build_triangles3,
+     .about = "three triangles that overlap in a cycle: no back-to-front order exists",
+     .eye = {0, 0, 10}, .target = {0, 0, 0}, .up = {0, 1, 0},
+     .fovy = 45, .near = 1, .far = 100},
+    {.name = "interpenetrate", .build = build_interpenetrate,
+     .about = "two cards that pass through each other in an X",
+     .eye = {1.0, 1.2, 4.0}, .target = {0, 0, 0}, .up = {0, 1, 0},
+     .fovy = 45, .near = 0.5, .far = 50},
+    {.name = "cubes", .build = build_cubes,
+     .about = "three cubes cutting into each other and into the floor",
+     .eye = {3.5, 4.0, 5.5}, .target = {0.3, 0.5, 0}, .up = {0, 1, 0},
+     .fovy = 45, .near = 1, .far = 50},
+    {.name = "grazing", .build = build_grazing,
+     .about = "two long strips crossing at under a degree, over d = 1.5 to 100",
+     .eye = {0, 0, 0}, .target = {0, 0, -1}, .up = {0, 1, 0},
+     .fovy = 45, .near = 0.5, .far = 150},
+    {.name = "walls", .build = build_walls,
+     .about = "a corridor of walls, pillars and a doorway, 1990s style",
+     .eye = {0, 1.6, 1.0}, .target = {0, 1.4, -20}, .up = {0, 1, 0},
+     .fovy = 60, .near = 0.5, .far = 100},
+    {.name = "knot", .build = build_knot,
+     .about = "a (2,3) torus knot tube of 3072 quads",
+     .eye = {0, -5.5, 8.5}, .target = {0, 0, 0}, .up = {0, 1, 0},
+     .fovy = 45, .near = 1, .far = 50},
 };
 
 int scene_count(void)

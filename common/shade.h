@@ -18,16 +18,17 @@
 #include <stdint.h>
 
 #include "camera.h"
-#include "cli.h"
 #include "error.h"
 #include "image.h"
 #include "mesh.h"
+
+/* What a pixel's colour shows (--shade flat|id|depth): the three modes above. */
+typedef enum { SHADE_FLAT, SHADE_ID, SHADE_DEPTH } ShadeMode;
 
 #define SHADE_AMBIENT 0.25
 #define SHADE_DIFFUSE 0.75
 
 extern const Rgb FLAT_BACKGROUND; /* (24, 28, 40) */
-extern const Rgb ID_BACKGROUND;   /* black */
 
 /* The face's colour before lighting: material Kd, else palette[face % size]. */
 Rgb face_base_colour(const Mesh *m, int face);

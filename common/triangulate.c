@@ -29,8 +29,6 @@
  * face, however hostile, takes more than about a second. */
 #define EAR_WORK_FACTOR 8
 
-static const double PI = 3.14159265358979323846;
-
 typedef struct { double u, v; } Point2;
 
 /* Newell's method: the sum over the edges of a polygon's projected areas.
@@ -253,7 +251,8 @@ int triangulate_polygon(const Vec3 *pts, int n, Tri *out, bool *convex)
             out[i] = (Tri){{0, i + 1, i + 2}};
     } else {
         *convex = is_convex(p, n);
-        Clipper k = {p, ints, ints + n, ints + 2 * n, 0, ints + 3 * n, cut, 0};
+        Clipper k = {.p = p, .prev = ints, .next = ints + n, .waiting = ints + 2 * n,
+                     .nwaiting = 0, .listed = ints + 3 * n, .cut = cut, .work_left = 0};
         clip_ears(&k, n, out);
     }
     if (!small) {

@@ -3,14 +3,6 @@
 
 #include <math.h>
 
-#define PI 3.14159265358979323846
-
-Vec2 vec2(double x, double y)
-{
-    Vec2 v = {x, y};
-    return v;
-}
-
 Vec3 vec3(double x, double y, double z)
 {
     Vec3 v = {x, y, z};

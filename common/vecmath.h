@@ -7,12 +7,13 @@
 #ifndef VECMATH_H
 #define VECMATH_H
 
-typedef struct { double x, y; } Vec2;
+/* pi to more digits than a double holds: the one definition every file uses. */
+#define PI 3.14159265358979323846
+
 typedef struct { double x, y, z; } Vec3;
 typedef struct { double x, y, z, w; } Vec4;
 typedef struct { double m[4][4]; } Mat4;
 
-Vec2 vec2(double x, double y);
 Vec3 vec3(double x, double y, double z);
 Vec4 vec4(double x, double y, double z, double w);
 
@@ -30,7 +31,7 @@ Vec4 mat4_mul_vec4(Mat4 m, Vec4 v); /* m * v */
 
 /* gluLookAt: camera at eye looking at target, up roughly up. The camera looks
  * down its own -Z axis, +Y up, +X right. Callers check that eye != target and
- * that up is not parallel to target - eye (cli.c does). */
+ * that up is not parallel to target - eye (camera_check in camera.h does). */
 Mat4 look_at(Vec3 eye, Vec3 target, Vec3 up);
 
 /* gluPerspective: fovy in degrees, aspect = width / height, 0 < near < far.

@@ -19,8 +19,6 @@
 #include "render.h"
 #include "test_support.h"
 
-static const double PI = 3.14159265358979323846;
-
 static Target new_target(int width, int height, const Rasterizer *rz)
 {
     Target t;

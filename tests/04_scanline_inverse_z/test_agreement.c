@@ -121,7 +121,6 @@ static void every_built_in_scene_agrees_with_lesson_03(void **state)
  * along the box's cut. */
 #define SPHERE_SLICES 32
 #define SPHERE_STACKS 16
-#define PI 3.14159265358979323846
 
 static void build_pierced_sphere(Mesh *m)
 {

@@ -136,6 +136,32 @@ static void point_behind_the_camera_has_no_positive_depth(void **state)
     assert_true(isfinite(level.x) && isfinite(level.y));
 }
 
+static void camera_check_accepts_the_front_camera(void **state)
+{
+    (void)state;
+    Error err = {{0}};
+    assert_true(camera_check(vec3(0, 0, 5), vec3(0, 0, 0), vec3(0, 1, 0), 90, 1, 100, W, H,
+                             &err));
+}
+
+static void camera_check_names_what_is_wrong(void **state)
+{
+    (void)state;
+    Error err = {{0}};
+    assert_false(camera_check(vec3(1, 2, 3), vec3(1, 2, 3), vec3(0, 1, 0), 90, 1, 100, W, H,
+                              &err));
+    assert_string_equal(err.msg, "--eye and --target are the same point");
+    assert_false(camera_check(vec3(0, 0, 5), vec3(0, 0, 0), vec3(0, 0, 2), 90, 1, 100, W, H,
+                              &err));
+    assert_string_equal(err.msg, "--up is parallel to the view direction from --eye to --target");
+    assert_false(camera_check(vec3(0, 0, 5), vec3(0, 0, 0), vec3(0, 1, 0), 90, 2, 1, W, H,
+                              &err));
+    assert_string_equal(err.msg, "--far: 1 is out of range (far must be greater than near, 2)");
+    assert_false(camera_check(vec3(0, 0, 5), vec3(0, 0, 0), vec3(0, 1, 0), 180, 1, 100, W, H,
+                              &err));
+    assert_string_equal(err.msg, "--fovy: 180 is out of range (0 < fovy < 180 degrees)");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -146,6 +172,8 @@ int main(void)
         cmocka_unit_test(farther_points_move_towards_the_centre),
         cmocka_unit_test(d_is_the_distance_along_the_view_axis),
         cmocka_unit_test(point_behind_the_camera_has_no_positive_depth),
+        cmocka_unit_test(camera_check_accepts_the_front_camera),
+        cmocka_unit_test(camera_check_names_what_is_wrong),
     };
     return cmocka_run_group_tests_name("camera", tests, NULL, NULL);
 }

@@ -21,8 +21,8 @@
 #include "cli.h"
 
 static const LessonFlag EXTRA_FLAGS[] = {
-    {"--painter", NULL, "draw back to front, no depth buffer"},
-    {"--max-faces", "N", "draw at most N faces"},
+    {.flag = "--painter", .metavar = NULL, .help = "draw back to front, no depth buffer"},
+    {.flag = "--max-faces", .metavar = "N", .help = "draw at most N faces"},
 };
 enum { EXTRA_PAINTER, EXTRA_MAX_FACES };
 

@@ -349,7 +349,7 @@ static void obj_camera_is_fitted_to_the_bounds(void **state)
     assert_true(fabs(s.target.x - 1) < 1e-12 && fabs(s.target.y - 1) < 1e-12 &&
                 fabs(s.target.z - 1) < 1e-12);
     double dist = vec3_length(vec3_sub(s.eye, s.target)), radius = sqrt(3.0);
-    assert_true(dist * sin(s.fovy / 2 * 3.14159265358979 / 180) > radius); /* sphere in view */
+    assert_true(dist * sin(s.fovy / 2 * PI / 180) > radius); /* sphere in view */
     assert_true(s.near > 0 && s.near < dist - radius);
     assert_true(s.far > dist + radius);
     mesh_free(&m);

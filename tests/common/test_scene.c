@@ -22,8 +22,6 @@
 #include "scene.h"
 #include "test_support.h"
 
-#define PI 3.14159265358979323846
-
 static void build(const char *name, Mesh *m)
 {
     const SceneInfo *s = scene_find(name);

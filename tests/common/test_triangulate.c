@@ -15,8 +15,6 @@
 
 #include "mesh.h"
 
-#define PI 3.14159265358979323846
-
 /* Twice the signed area of a 2-D triangle in the xy plane. */
 static double area2(Vec3 a, Vec3 b, Vec3 c)
 {

@@ -22,8 +22,8 @@
 #define MAX_ARGS 64
 
 static const LessonFlag EXTRA[] = {
-    {"--painter", NULL, "a switch"},
-    {"--bug", "NAME", "a flag with a value"},
+    {.flag = "--painter", .metavar = NULL, .help = "a switch"},
+    {.flag = "--bug", .metavar = "NAME", .help = "a flag with a value"},
 };
 
 static const LessonCli SPECS[] = {
