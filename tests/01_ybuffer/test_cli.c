@@ -14,7 +14,6 @@
 #include "test_support.h"
 
 #define PROGRAM "01_ybuffer"
-#define PATH_MAX_LEN 512
 #define TEXT_MAX 4096
 
 /* The summary of the default run; the runs are the ones derived in test_ybuffer.c. */
@@ -26,34 +25,6 @@
     "  nothing: 75 columns: 0-19, 745-799\n"                                     \
     "column tests: 1315 made, 1174 passed (y > stored), 141 failed\n"
 
-typedef struct {
-    char path[PATH_MAX_LEN];
-} Path;
-
-static Path in_dir(const char *dir, const char *file)
-{
-    Path p;
-    snprintf(p.path, sizeof p.path, "%s", path_join(dir, file));
-    return p;
-}
-
-static void write_text(const char *path, const char *text)
-{
-    FILE *fp = fopen(path, "w");
-    assert_non_null(fp);
-    fputs(text, fp);
-    assert_int_equal(fclose(fp), 0);
-}
-
-static Image read_png(const char *path)
-{
-    Image im;
-    Error err;
-    if (!image_read_png(&im, path, &err))
-        fail_msg("cannot read the lesson's output: %s", err.msg);
-    return im;
-}
-
 static void expect_same_pixels(const Image *a, const Image *b, const char *what)
 {
     assert_int_equal(a->width, b->width);
@@ -61,21 +32,6 @@ static void expect_same_pixels(const Image *a, const Image *b, const char *what)
     size_t n = (size_t)a->width * (size_t)a->height * 3;
     if (memcmp(a->rgb, b->rgb, n) != 0)
         fail_msg("%s: the pictures differ", what);
-}
-
-/* A run that must fail: exact stderr line, exit status, and no output file. */
-static void expect_refused(const char *const *args, int status, const char *message,
-                           const char *no_file)
-{
-    RunResult r = run_program(PROGRAM, args);
-    char want[TEXT_MAX];
-    snprintf(want, sizeof want, "01_ybuffer: error: %s\n", message);
-    assert_string_equal(r.err, want);
-    assert_int_equal(r.status, status);
-    assert_string_equal(r.out, "");
-    if (file_exists(no_file))
-        fail_msg("%s was written by a run that failed", no_file);
-    run_result_free(&r);
 }
 
 static void default_run_prints_the_summary_and_writes_three_pictures(void **state)
@@ -275,12 +231,12 @@ static void bad_order_is_a_usage_error(void **state)
     const char *dir = test_dir("l01_bad_order");
     Path out = in_dir(dir, "render.png");
     const char *args[] = {"--out", out.path, "--order", "12", NULL};
-    expect_refused(args, 2,
+    expect_run_refused(PROGRAM, args, 2,
                    "--order '12': expected each of 1..3 exactly once, as digits (e.g. 312) "
                    "or separated by commas",
                    out.path);
     const char *args2[] = {"--out", out.path, "--order", "332", NULL};
-    expect_refused(args2, 2,
+    expect_run_refused(PROGRAM, args2, 2,
                    "--order '332': expected each of 1..3 exactly once, as digits (e.g. 312) "
                    "or separated by commas",
                    out.path);
@@ -294,7 +250,7 @@ static void missing_segments_file_fails_with_status_1(void **state)
     const char *args[] = {"--out", out.path, "--segments", file.path, NULL};
     char msg[TEXT_MAX];
     snprintf(msg, sizeof msg, "cannot read %s: No such file or directory", file.path);
-    expect_refused(args, 1, msg, out.path);
+    expect_run_refused(PROGRAM, args, 1, msg, out.path);
 }
 
 static void malformed_segments_file_names_the_line(void **state)
@@ -307,11 +263,11 @@ static void malformed_segments_file_names_the_line(void **state)
     char msg[TEXT_MAX];
     snprintf(msg, sizeof msg, "%s:3: expected 7 numbers 'x0 y0 x1 y1 r g b', got 5",
              file.path);
-    expect_refused(args, 1, msg, out.path);
+    expect_run_refused(PROGRAM, args, 1, msg, out.path);
 
     write_text(file.path, "20 34 744 400 255 300 0\n");
     snprintf(msg, sizeof msg, "%s:1: g 300 is out of range 0..255", file.path);
-    expect_refused(args, 1, msg, out.path);
+    expect_run_refused(PROGRAM, args, 1, msg, out.path);
 }
 
 static void two_outputs_with_one_name_are_refused(void **state)
@@ -322,7 +278,7 @@ static void two_outputs_with_one_name_are_refused(void **state)
     const char *args[] = {"--out", out.path, "--scene-out", out.path, NULL};
     char msg[TEXT_MAX];
     snprintf(msg, sizeof msg, "--out and --scene-out both name %s", out.path);
-    expect_refused(args, 2, msg, out.path);
+    expect_run_refused(PROGRAM, args, 2, msg, out.path);
 }
 
 static void unknown_flag_and_bad_width_are_usage_errors(void **state)
@@ -331,11 +287,11 @@ static void unknown_flag_and_bad_width_are_usage_errors(void **state)
     const char *dir = test_dir("l01_usage");
     Path out = in_dir(dir, "x.png");
     const char *a1[] = {"--out", out.path, "--bogus", NULL};
-    expect_refused(a1, 2, "unknown flag '--bogus' (try --help)", out.path);
+    expect_run_refused(PROGRAM, a1, 2, "unknown flag '--bogus' (try --help)", out.path);
     const char *a2[] = {"--out", out.path, "--width", "0", NULL};
-    expect_refused(a2, 2, "--width: 0 is out of range (1 to 16384)", out.path);
+    expect_run_refused(PROGRAM, a2, 2, "--width: 0 is out of range (1 to 16384)", out.path);
     const char *a3[] = {"--out", out.path, "--order", NULL};
-    expect_refused(a3, 2, "--order needs a value", out.path);
+    expect_run_refused(PROGRAM, a3, 2, "--order needs a value", out.path);
 }
 
 static void unwritable_output_fails_with_status_1(void **state)

@@ -22,14 +22,6 @@
 static const Rgb RED = {255, 0, 0}, GREEN = {0, 255, 0}, BLUE = {0, 0, 255};
 static const Rgb BLACK = {0, 0, 0};
 
-static void expect_pixel(const Image *im, int x, int row, Rgb want, const char *why)
-{
-    Rgb got = image_get(im, x, row);
-    if (got.r != want.r || got.g != want.g || got.b != want.b)
-        fail_msg("pixel (%d, row %d) (%s): got (%d,%d,%d), expected (%d,%d,%d)", x, row, why,
-                 got.r, got.g, got.b, want.r, want.g, want.b);
-}
-
 static Rgb grey(int g)
 {
     return (Rgb){(uint8_t)g, (uint8_t)g, (uint8_t)g};

@@ -24,13 +24,8 @@
 /* Runs the lesson, expecting success, and reads back the picture it wrote. */
 static void render_to_image(const char *const *args, const char *out, Image *im)
 {
-    RunResult r = run_program(PROGRAM, args);
-    if (r.status != 0)
-        fail_msg("02_zbuffer exited with %d: %s", r.status, r.err);
-    run_result_free(&r);
-    Error err;
-    if (!image_read_png(im, out, &err))
-        fail_msg("reading %s: %s", out, err.msg);
+    free(run_ok(PROGRAM, args));
+    *im = read_png(out);
 }
 
 /* ---- Expected images ---------------------------------------------------------- */
@@ -230,31 +225,22 @@ static void obj_file_is_framed_and_coloured(void **state)
 
 /* ---- Errors ------------------------------------------------------------------ */
 
-static void expect_error(const char *const *args, int status, const char *message)
-{
-    RunResult r = run_program(PROGRAM, args);
-    if (r.status != status || strcmp(r.err, message) != 0)
-        fail_msg("exit %d, stderr:\n%s\nexpected exit %d, stderr:\n%s", r.status, r.err,
-                 status, message);
-    run_result_free(&r);
-}
-
 static void bad_lesson_flags_are_usage_errors(void **state)
 {
     (void)state;
     const char *a1[] = {"--bug", "off-by-one", NULL};
-    expect_error(a1, 2,
+    expect_run_error(PROGRAM, a1, 2,
                  "02_zbuffer: error: --bug: 'off-by-one' is not one of separate-buffers, "
                  "clear-zero\n");
     const char *a2[] = {"--painter", "--bug", "clear-zero", NULL};
-    expect_error(a2, 2, "02_zbuffer: error: --painter and --bug cannot be used together\n");
+    expect_run_error(PROGRAM, a2, 2, "02_zbuffer: error: --painter and --bug cannot be used together\n");
     const char *a3[] = {"--bug", NULL};
-    expect_error(a3, 2, "02_zbuffer: error: --bug needs a value\n");
+    expect_run_error(PROGRAM, a3, 2, "02_zbuffer: error: --bug needs a value\n");
     const char *a4[] = {"--ascii", NULL}; /* the default 800x600 is too big to read as text */
-    expect_error(a4, 2, "02_zbuffer: error: --ascii: the image is 800x600; --ascii prints at "
+    expect_run_error(PROGRAM, a4, 2, "02_zbuffer: error: --ascii: the image is 800x600; --ascii prints at "
                         "most 120x60 (use --width and --height)\n");
     const char *a5[] = {"--painter", "--steps", "frames", NULL}; /* no one depth buffer to show */
-    expect_error(a5, 2, "02_zbuffer: error: --steps follows one depth buffer face by face; it "
+    expect_run_error(PROGRAM, a5, 2, "02_zbuffer: error: --steps follows one depth buffer face by face; it "
                         "cannot be used with --painter or --bug separate-buffers\n");
 }
 
@@ -267,7 +253,7 @@ static void missing_obj_fails_without_output(void **state)
     char message[1200];
     snprintf(message, sizeof message,
              "02_zbuffer: error: cannot read %s: No such file or directory\n", args[1]);
-    expect_error(args, 1, message);
+    expect_run_error(PROGRAM, args, 1, message);
     assert_false(file_exists(out));
 }
 
@@ -286,14 +272,14 @@ static void unwritable_output_fails_cleanly(void **state)
     snprintf(message, sizeof message,
              "02_zbuffer: error: cannot create directory %s: a file of that name exists\n",
              blocker);
-    expect_error(args, 1, message);
+    expect_run_error(PROGRAM, args, 1, message);
 }
 
 static void bad_camera_is_a_usage_error(void **state)
 {
     (void)state;
     const char *args[] = {"--near", "5", "--far", "1", NULL};
-    expect_error(args, 2,
+    expect_run_error(PROGRAM, args, 2,
                  "02_zbuffer: error: --far: 1 is out of range (far must be greater than "
                  "near, 5)\n");
 }

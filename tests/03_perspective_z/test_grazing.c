@@ -87,26 +87,12 @@ static bool tested_pixel(int x, int y, bool *above)
     return true;
 }
 
-/* Runs the lesson with args, expecting success, and returns its stdout. */
-static char *run_ok(const char *const *args)
+/* A picture of grazing at the default size, 800 x 600, read back. */
+static Image read_grazing_png(const char *path)
 {
-    RunResult r = run_program(PROGRAM, args);
-    if (r.status != 0)
-        fail_msg("%s exited with %d: %s", PROGRAM, r.status, r.err);
-    char *out = r.out;
-    r.out = NULL;
-    run_result_free(&r);
-    return out;
-}
-
-static Image read_png(const char *path)
-{
-    Image im;
-    Error err;
-    if (!image_read_png(&im, path, &err))
-        fail_msg("reading %s: %s", path, err.msg);
-    assert_int_equal(im.width, 800);
-    assert_int_equal(im.height, 600);
+    Image im = read_png(path);
+    expect_count(800, im.width, "picture width");
+    expect_count(600, im.height, "picture height");
     return im;
 }
 
@@ -116,13 +102,8 @@ static Image render_id(const char *name, const char *flag, const char *value)
     char out[4096];
     snprintf(out, sizeof out, "%s", path_join(test_dir(name), "id.png"));
     const char *args[] = {"--scene", "grazing", "--shade", "id", "--out", out, flag, value, NULL};
-    free(run_ok(args));
-    return read_png(out);
-}
-
-static int32_t face_at(const Image *im, int x, int y)
-{
-    return id_colour_face(image_get(im, x, y));
+    free(run_ok(PROGRAM, args));
+    return read_grazing_png(out);
 }
 
 /* The test's own count of its pixels, so that a change of scene shows here
@@ -207,8 +188,8 @@ static void compare_naive_marks_the_pixels_the_naive_rule_gets_wrong(void **stat
     snprintf(out, sizeof out, "%s", path_join(dir, "right.png"));
     snprintf(cmp, sizeof cmp, "%s", path_join(dir, "sub/compare.png"));
     const char *args[] = {"--out", out, "--compare-naive", cmp, NULL};
-    char *summary = run_ok(args);
-    Image im = read_png(cmp);
+    char *summary = run_ok(PROGRAM, args);
+    Image im = read_grazing_png(cmp);
     long marked = 0;
     for (int y = 0; y < 600; y++)
         for (int x = 0; x < 800; x++) {
@@ -266,7 +247,7 @@ static void depth_out_is_where_the_ray_meets_the_plane(void **state)
     snprintf(pfm, sizeof pfm, "%s", path_join(dir, "depth.pfm"));
     snprintf(png, sizeof png, "%s", path_join(dir, "pic.png"));
     const char *args[] = {"--fovy", "90", "--depth-out", pfm, "--out", png, NULL};
-    free(run_ok(args));
+    free(run_ok(PROGRAM, args));
     float *depth;
     int w, h;
     Error err;

@@ -19,42 +19,7 @@
 
 #define PROGRAM "04_scanline_inverse_z"
 #define GROUP "04_scanline_inverse_z"
-#define PATH_MAX_LEN 512
 #define TEXT_MAX 4096
-
-typedef struct {
-    char path[PATH_MAX_LEN];
-} Path;
-
-static Path in_dir(const char *dir, const char *file)
-{
-    Path p;
-    snprintf(p.path, sizeof p.path, "%s", path_join(dir, file));
-    return p;
-}
-
-static Image read_png(const char *path)
-{
-    Image im;
-    Error err;
-    if (!image_read_png(&im, path, &err))
-        fail_msg("cannot read the lesson's output: %s", err.msg);
-    return im;
-}
-
-static void write_text(const char *path, const char *text)
-{
-    FILE *fp = fopen(path, "w");
-    assert_non_null(fp);
-    fputs(text, fp);
-    assert_int_equal(fclose(fp), 0);
-}
-
-static void expect_line(const char *out, const char *line)
-{
-    if (!strstr(out, line))
-        fail_msg("the summary lacks the line\n%s\nit was:\n%s", line, out);
-}
 
 /* ---- the default run ------------------------------------------------------ */
 
@@ -276,36 +241,22 @@ static void depth_interp_naive_and_compare_naive(void **state)
 
 /* ---- bad input ------------------------------------------------------------- */
 
-static void expect_refused(const char *const *args, int status, const char *message,
-                           const char *no_file)
-{
-    RunResult r = run_program(PROGRAM, args);
-    char want[TEXT_MAX];
-    snprintf(want, sizeof want, PROGRAM ": error: %s\n", message);
-    assert_string_equal(r.err, want);
-    assert_int_equal(r.status, status);
-    assert_string_equal(r.out, "");
-    if (file_exists(no_file))
-        fail_msg("%s was written by a run that failed", no_file);
-    run_result_free(&r);
-}
-
 static void bad_command_lines_are_refused_with_status_2(void **state)
 {
     (void)state;
     const char *dir = test_dir("l04_refused");
     Path out = in_dir(dir, "never.png");
     const char *unknown[] = {"--out", out.path, "--bogus", NULL};
-    expect_refused(unknown, 2, "unknown flag '--bogus' (try --help)", out.path);
+    expect_run_refused(PROGRAM, unknown, 2, "unknown flag '--bogus' (try --help)", out.path);
     const char *scene[] = {"--out", out.path, "--scene", "nope", NULL};
-    expect_refused(scene, 2,
+    expect_run_refused(PROGRAM, scene, 2,
                    "--scene: no scene named 'nope' (known: triangles3, interpenetrate, cubes, "
                    "grazing, walls, knot)",
                    out.path);
     const char *width[] = {"--out", out.path, "--width", "0", NULL};
-    expect_refused(width, 2, "--width: 0 is out of range (1 to 16384)", out.path);
+    expect_run_refused(PROGRAM, width, 2, "--width: 0 is out of range (1 to 16384)", out.path);
     const char *interp[] = {"--out", out.path, "--depth-interp", "linear", NULL};
-    expect_refused(interp, 2, "--depth-interp: 'linear' is not one of perspective, naive",
+    expect_run_refused(PROGRAM, interp, 2, "--depth-interp: 'linear' is not one of perspective, naive",
                    out.path);
 }
 
@@ -317,7 +268,7 @@ static void missing_obj_fails_with_status_1(void **state)
     const char *args[] = {"--out", out.path, "--obj", obj.path, NULL};
     char message[TEXT_MAX];
     snprintf(message, sizeof message, "cannot read %s: No such file or directory", obj.path);
-    expect_refused(args, 1, message, out.path);
+    expect_run_refused(PROGRAM, args, 1, message, out.path);
 }
 
 int main(void)
