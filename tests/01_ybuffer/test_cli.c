@@ -27,8 +27,8 @@
 
 static void expect_same_pixels(const Image *a, const Image *b, const char *what)
 {
-    assert_int_equal(a->width, b->width);
-    assert_int_equal(a->height, b->height);
+    expect_count(b->width, a->width, "picture width");
+    expect_count(b->height, a->height, "picture height");
     size_t n = (size_t)a->width * (size_t)a->height * 3;
     if (memcmp(a->rgb, b->rgb, n) != 0)
         fail_msg("%s: the pictures differ", what);
@@ -44,7 +44,7 @@ static void default_run_prints_the_summary_and_writes_three_pictures(void **stat
                           scene.path, NULL};
     RunResult r = run_program(PROGRAM, args);
     assert_string_equal(r.err, "");
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     char want[TEXT_MAX];
     snprintf(want, sizeof want, DEFAULT_SUMMARY "wrote %s, %s, %s\n", out.path, yb.path,
              scene.path);
@@ -52,8 +52,8 @@ static void default_run_prints_the_summary_and_writes_three_pictures(void **stat
     run_result_free(&r);
 
     Image im = read_png(out.path);
-    assert_int_equal(im.width, 800);
-    assert_int_equal(im.height, 16); /* the one row, repeated to --height 16 */
+    expect_count(800, im.width, "picture width");
+    expect_count(16, im.height, "picture height"); /* the one row, repeated to --height 16 */
     expect_image(&im, "01_ybuffer", "default_render");
     image_free(&im);
     im = read_png(yb.path);
@@ -69,7 +69,7 @@ static void no_arguments_writes_out_01_ybuffer_png(void **state)
     (void)state;
     const char *args[] = {NULL};
     RunResult r = run_program(PROGRAM, args);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     assert_string_equal(r.out, DEFAULT_SUMMARY "wrote out/01_ybuffer.png\n");
     assert_true(file_exists("out/01_ybuffer.png"));
     run_result_free(&r);
@@ -82,7 +82,7 @@ static void missing_output_directories_are_created(void **state)
     Path out = in_dir(dir, "new/deeper/render.png");
     const char *args[] = {"--out", out.path, NULL};
     RunResult r = run_program(PROGRAM, args);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     assert_true(file_exists(out.path));
     run_result_free(&r);
 }
@@ -97,10 +97,10 @@ static void order_312_changes_only_the_tie_column(void **state)
     const char *args_a[] = {"--out", a.path, NULL};
     const char *args_b[] = {"--out", b.path, "--order", "312", NULL};
     RunResult r = run_program(PROGRAM, args_a);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     run_result_free(&r);
     r = run_program(PROGRAM, args_b);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     assert_non_null(strstr(r.out, "in the order 3 1 2\n"));
     assert_non_null(strstr(r.out, "  2 green   (120,434)-(444,400): won 267 columns: 120-329, 388-444\n"));
     assert_non_null(strstr(r.out, "  3 blue    (330,463)-(594,200): won 125 columns: 330-387, 445-511\n"));
@@ -129,7 +129,7 @@ static void steps_write_a_render_and_a_ybuffer_per_segment(void **state)
     Path steps = in_dir(dir, "steps"), out = in_dir(dir, "render.png");
     const char *args[] = {"--out", out.path, "--steps", steps.path, NULL};
     RunResult r = run_program(PROGRAM, args);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     run_result_free(&r);
     static const char *const NAMES[] = {"step_0000.png", "step_0000_depth.png",
                                         "step_0001.png", "step_0001_depth.png",
@@ -165,7 +165,7 @@ static void segments_file_with_the_default_scene_gives_the_default_picture(void 
     const char *args_a[] = {"--segments", file.path, "--out", a.path, NULL};
     const char *args_b[] = {"--out", b.path, NULL};
     RunResult r = run_program(PROGRAM, args_a);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     char want[TEXT_MAX];
     snprintf(want, sizeof want, DEFAULT_SUMMARY "wrote %s\n", a.path);
     assert_string_equal(r.out, want);
@@ -186,7 +186,7 @@ static void empty_segments_file_draws_nothing(void **state)
     write_text(file.path, "");
     const char *args[] = {"--segments", file.path, "--out", out.path, NULL};
     RunResult r = run_program(PROGRAM, args);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     char want[TEXT_MAX];
     snprintf(want, sizeof want,
              "no segments drawn into 800 columns\n"
@@ -211,7 +211,7 @@ static void vertical_and_off_screen_segments_from_a_file(void **state)
     write_text(file.path, "100 10 100 50 255 255 0\n-300 5 -1 5 0 255 255\n");
     const char *args[] = {"--segments", file.path, "--out", out.path, "--width", "200", NULL};
     RunResult r = run_program(PROGRAM, args);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     char want[TEXT_MAX];
     snprintf(want, sizeof want,
              "2 segments drawn into 200 columns, in the order 1 2\n"
@@ -309,7 +309,7 @@ static void unwritable_output_fails_with_status_1(void **state)
     if (strncmp(r.err, want, strlen(want)) != 0)
         fail_msg("stderr: \"%s\", expected it to start with \"%s\"", r.err, want);
     assert_ptr_equal(strchr(r.err, '\n'), r.err + strlen(r.err) - 1); /* one line */
-    assert_int_equal(r.status, 1);
+    expect_count(1, r.status, "exit status");
     assert_false(file_exists(out.path));
     run_result_free(&r);
 }

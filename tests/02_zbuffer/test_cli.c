@@ -37,8 +37,8 @@ static void default_render_matches_expected(void **state)
     const char *args[] = {"--out", out, NULL};
     Image im;
     render_to_image(args, out, &im);
-    assert_int_equal(im.width, 800); /* the defaults: 800 x 600, triangles3, flat */
-    assert_int_equal(im.height, 600);
+    expect_count(800, im.width, "picture width"); /* the defaults: 800 x 600, triangles3, flat */
+    expect_count(600, im.height, "picture height");
     expect_image(&im, GROUP, "default");
     image_free(&im);
 }
@@ -139,7 +139,7 @@ static void summary_agrees_with_the_written_files(void **state)
     const char *args[] = {"--width", "200", "--height", "150", "--out", png, "--depth-out",
                           pfm, "--overdraw-out", pgm, NULL};
     RunResult r = run_program(PROGRAM, args);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
 
     const char *first = "02_zbuffer: scene triangles3 (3 faces): 3 triangles drawn, "
                         "0 dropped at the near plane\n";

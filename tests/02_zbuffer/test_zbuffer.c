@@ -82,10 +82,10 @@ static void painter_gets_triangles3_wrong(void **state)
     Error err;
     load_triangles3(&r, &t, ZBUFFER.clear_value);
     assert_true(draw_painter(&r, &t, &ZBUFFER, &err));
-    assert_int_equal(target_face_at(&t, 70, 90), BLUE);  /* wrong: red is nearer here */
-    assert_int_equal(target_face_at(&t, 100, 40), BLUE); /* right by luck of the order */
-    assert_int_equal(target_face_at(&t, 125, 90), GREEN);
-    assert_int_equal(t.stats.failed, 0); /* no depth test ever said no */
+    expect_target_face(&t, 70, 90, BLUE, "");  /* wrong: red is nearer here */
+    expect_target_face(&t, 100, 40, BLUE, ""); /* right by luck of the order */
+    expect_target_face(&t, 125, 90, GREEN, "");
+    expect_count(0, t.stats.failed, "fragments failed"); /* no depth test ever said no */
     target_free(&t);
     render_free(&r);
 }
@@ -183,8 +183,8 @@ static void fragments_beyond_far_are_discarded_untested(void **state)
     ScreenFace f = screen_triangle(v, 0);
     DrawContext ctx = {0.1, 50};
     draw_face(&t, &f, &ctx);
-    assert_int_equal(t.stats.tested, 0);
-    assert_int_equal(target_face_at(&t, 3, 3), NO_FACE);
+    expect_count(0, t.stats.tested, "fragments tested");
+    expect_target_face(&t, 3, 3, NO_FACE, "");
     target_free(&t);
 }
 
@@ -248,8 +248,8 @@ static void separate_buffers_let_the_last_object_cover_the_first(void **state)
     /* One buffer: A (d 2) is in front at the centre. Separate buffers: B was
      * drawn after A into a buffer where A does not exist, and within B its
      * nearer face 2 (d about 6) still hides face 1 (d 8). */
-    assert_int_equal(target_face_at(&right, 32, 32), 0);
-    assert_int_equal(target_face_at(&wrong, 32, 32), 2);
+    expect_target_face(&right, 32, 32, 0, "");
+    expect_target_face(&wrong, 32, 32, 2, "");
     /* --depth-out shows the depth of what is on screen: face 2's, not A's 2. */
     assert_true(target_depth_at(&wrong, 32, 32) > 5);
     target_free(&right);
@@ -267,8 +267,8 @@ static void clear_to_zero_draws_nothing(void **state)
     load_triangles3(&r, &t, CLEAR_ZERO_BUG);
     assert_true(render_faces(&r, &t, &ZBUFFER, NULL, 0, NULL, NULL, &err));
     assert_true(t.stats.tested > 0);
-    assert_int_equal(t.stats.passed, 0);
-    assert_int_equal(t.stats.failed, t.stats.tested);
+    expect_count(0, t.stats.passed, "fragments passed");
+    expect_count(t.stats.tested, t.stats.failed, "fragments failed");
     for (int i = 0; i < t.width * t.height; i++)
         if (t.face[i] != NO_FACE)
             fail_msg("pixel %d was drawn with the buffer cleared to 0", i);

@@ -32,8 +32,8 @@ static void default_render_matches_expected(void **state)
     const char *args[] = {"--out", out, NULL};
     free(run_ok(PROGRAM, args));
     Image im = read_png(out);
-    assert_int_equal(im.width, 800);
-    assert_int_equal(im.height, 600);
+    expect_count(800, im.width, "picture width");
+    expect_count(600, im.height, "picture height");
     expect_image(&im, GROUP, "default");
     image_free(&im);
 }

@@ -217,8 +217,8 @@ static void fragments_beyond_far_are_discarded_untested(void **state)
     ScreenFace f = screen_triangle(v, 0);
     DrawContext ctx = {0.1, 50};
     draw_face(&t, &f, &ctx);
-    assert_int_equal(t.stats.tested, 0);
-    assert_int_equal(target_face_at(&t, 3, 3), NO_FACE);
+    expect_count(0, t.stats.tested, "fragments tested");
+    expect_target_face(&t, 3, 3, NO_FACE, "");
     target_free(&t);
 }
 
@@ -247,7 +247,7 @@ static void negated_w_lets_the_far_square_cover_the_near_one(void **state)
         Target right = new_target(32, 32, &ZBUFFER), bug = new_target(32, 32, &NEGATED_W_BUG);
         draw_two_squares(&right, &ZBUFFER, order);
         draw_two_squares(&bug, &NEGATED_W_BUG, order);
-        assert_int_equal(target_face_at(&right, 16, 16), 0);
+        expect_target_face(&right, 16, 16, 0, "");
         assert_true(target_depth_at(&right, 16, 16) == 2);
         if (target_face_at(&bug, 16, 16) != 1)
             fail_msg("draw order %d: with -d stored the far square should cover the near one "

@@ -35,14 +35,14 @@ static void default_run_draws_the_walls_and_finds_the_front_object(void **state)
     const char *args[] = {NULL};
     RunResult r = run_program(PROGRAM, args);
     assert_string_equal(r.err, "");
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     expect_line(r.out, "04_scanline_inverse_z: scene walls (98 faces): ");
     expect_line(r.out, "  wrote out/04_scanline_inverse_z.png\n");
     expect_line(r.out, "  front object: face 97 at d = 42.002 at the screen centre (400,300)\n");
     run_result_free(&r);
     Image im = read_png("out/04_scanline_inverse_z.png");
-    assert_int_equal(im.width, 800);
-    assert_int_equal(im.height, 600);
+    expect_count(800, im.width, "picture width");
+    expect_count(600, im.height, "picture height");
     expect_image(&im, GROUP, "default_render");
     image_free(&im);
 }
@@ -104,7 +104,7 @@ static void depth_out_writes_view_depth_not_its_inverse(void **state)
          pfm = in_dir(dir, "square.pfm");
     write_text(obj.path, SQUARE_OBJ);
     RunResult r = render_square(obj.path, out.path, pfm.path);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     expect_line(r.out, "  fragments: 400 tested, 400 passed, 0 failed; ");
     expect_line(r.out, "  front object: face 0 at d = 5.000 at the screen centre (50,50)\n");
     run_result_free(&r);
@@ -136,7 +136,7 @@ static void nothing_at_the_centre_is_reported(void **state)
     Path obj = in_dir(dir, "far.obj"), out = in_dir(dir, "far.png");
     write_text(obj.path, FAR_SQUARE_OBJ);
     RunResult r = render_square(obj.path, out.path, NULL);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     expect_line(r.out, "  fragments: 0 tested, 0 passed, 0 failed; no pixel covered\n");
     expect_line(r.out, "  front object: nothing at the screen centre (50,50)\n");
     run_result_free(&r);
@@ -180,7 +180,7 @@ static void ascii_and_trace_speak_of_inverse_depth(void **state)
     const char *extra[] = {"--ascii", "--trace", "4,1", NULL};
     RunResult r = render_two_buffers(test_dir("l04_two_buffers_text"), extra);
     assert_string_equal(r.err, "");
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     expect_line(r.out, "  fragments: 36 tested, 24 passed, 12 failed; ");
     expect_line(r.out, "trace pixel (4,1): 2 fragments\n");
     expect_line(r.out, "  1. face 0   1/d=0.2          stored=0            passed\n");
@@ -199,7 +199,7 @@ static void steps_write_a_frame_per_face(void **state)
     Path steps = in_dir(dir, "steps");
     const char *extra[] = {"--steps", steps.path, NULL};
     RunResult r = render_two_buffers(dir, extra);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     run_result_free(&r);
     const char *frames[] = {"step_0000.png", "step_0001.png", "step_0002.png",
                             "step_0002_depth.png"};
@@ -219,7 +219,7 @@ static void depth_interp_naive_and_compare_naive(void **state)
     const char *dir = test_dir("l04_naive");
     const char *naive[] = {"--depth-interp", "naive", NULL};
     RunResult r = render_two_buffers(dir, naive);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     expect_line(r.out, "  depth-interp naive: d was stepped along edges and spans, not 1/d\n");
     expect_line(r.out, "  fragments: 36 tested, 24 passed, 12 failed; ");
     run_result_free(&r);
@@ -228,7 +228,7 @@ static void depth_interp_naive_and_compare_naive(void **state)
     const char *args[] = {"--scene", "grazing", "--width", "240", "--height", "180",
                           "--out", out.path, "--compare-naive", marked.path, NULL};
     r = run_program(PROGRAM, args);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     long differing = -1;
     const char *line = strstr(r.out, "  the naive rule shows another face at ");
     assert_non_null(line);

@@ -111,8 +111,8 @@ static void triangle_at_depth_5_in_front_of_nothing(void **state)
     draw_flat(&t, TRIANGLE_AT_5, 3, 5.0, 0);
     const char *map[] = {"   55   ", "  5555  ", " 555555 "};
     expect_map(&t, true, map, "De Goes' first z-buffer");
-    assert_int_equal(t.stats.tested, 2 + 4 + 6);
-    assert_int_equal(t.stats.passed, 12);
+    expect_count(2 + 4 + 6, t.stats.tested, "fragments tested");
+    expect_count(12, t.stats.passed, "fragments passed");
     target_free(&t);
 }
 
@@ -125,9 +125,9 @@ static void screen_polygon_at_depth_6_shows_only_around_the_triangle(void **stat
     const char *map[] = {"66655666", "66555566", "65555556"};
     expect_map(&t, true, map, "De Goes' second z-buffer");
     /* 24 fragments of the depth-6 polygon: 12 land on cleared pixels, 12 lose to the 5s. */
-    assert_int_equal(t.stats.tested, 12 + 24);
-    assert_int_equal(t.stats.passed, 12 + 12);
-    assert_int_equal(t.stats.failed, 12);
+    expect_count(12 + 24, t.stats.tested, "fragments tested");
+    expect_count(12 + 12, t.stats.passed, "fragments passed");
+    expect_count(12, t.stats.failed, "fragments failed");
     target_free(&t);
 }
 
@@ -141,8 +141,8 @@ static void two_buffers_do_not_depend_on_drawing_order(void **state)
     draw_flat(&t, TRIANGLE_AT_5, 3, 5.0, 0);
     const char *map[] = {"66655666", "66555566", "65555556"};
     expect_map(&t, true, map, "screen polygon first, then the triangle");
-    assert_int_equal(t.stats.passed, 24 + 12);
-    assert_int_equal(t.stats.failed, 0);
+    expect_count(24 + 12, t.stats.passed, "fragments passed");
+    expect_count(0, t.stats.failed, "fragments failed");
     target_free(&t);
 }
 
@@ -188,8 +188,8 @@ static void larger_inverse_depth_wins(void **state)
     assert_int_equal(t.face[0], 2);
     assert_int_equal(t.face[1], 2);
     assert_true(t.depth[0] == 0.5f && t.depth[1] == 0.5f);
-    assert_int_equal(t.stats.tested, 4);
-    assert_int_equal(t.stats.failed, 1);
+    expect_count(4, t.stats.tested, "fragments tested");
+    expect_count(1, t.stats.failed, "fragments failed");
     assert_int_equal(t.overdraw[0], 2);
     target_free(&t);
 }
@@ -202,7 +202,7 @@ static void equal_depth_keeps_the_first_fragment(void **state)
     draw_flat(&t, SCREEN_POLYGON, 4, 6.0, 2);
     for (size_t i = 0; i < 24; i++)
         assert_int_equal(t.face[i], 1);
-    assert_int_equal(t.stats.failed, 24);
+    expect_count(24, t.stats.failed, "fragments failed");
     target_free(&t);
 }
 
@@ -213,9 +213,9 @@ static void far_plane_discards_before_the_test(void **state)
     (void)state;
     Target t = make_target(8, 3);
     draw_flat(&t, SCREEN_POLYGON, 4, 1001.0, 1);
-    assert_int_equal(t.stats.tested, 0);
+    expect_count(0, t.stats.tested, "fragments tested");
     draw_flat(&t, SCREEN_POLYGON, 4, 1000.0, 2);
-    assert_int_equal(t.stats.tested, 24);
+    expect_count(24, t.stats.tested, "fragments tested");
     assert_int_equal(t.face[0], 2);
     target_free(&t);
 }
@@ -243,7 +243,7 @@ static void expect_polygon_map(const double (*xy)[2], int n, int width, int heig
             snprintf(label, sizeof label, "%s (%s winding, starting at corner %d)", what,
                      reversed ? "reversed" : "given", start);
             expect_map(&t, false, rows, label);
-            assert_int_equal(t.stats.tested, pixels);
+            expect_count(pixels, t.stats.tested, "fragments tested");
             target_free(&t);
         }
     }
@@ -350,7 +350,7 @@ static void zero_height_polygon_draws_nothing(void **state)
     const double on_centre[4][2] = {{0, 2.5}, {3, 2.5}, {8, 2.5}, {5, 2.5}};
     draw_flat(&t, flat, 3, 2.0, 0);
     draw_flat(&t, on_centre, 4, 2.0, 0);
-    assert_int_equal(t.stats.tested, 0);
+    expect_count(0, t.stats.tested, "fragments tested");
     target_free(&t);
 }
 
@@ -361,7 +361,7 @@ static void zero_width_polygon_draws_nothing(void **state)
     Target t = make_target(8, 8);
     const double sliver[3][2] = {{3.5, 0}, {3.5, 8}, {3.5, 4}};
     draw_flat(&t, sliver, 3, 2.0, 0);
-    assert_int_equal(t.stats.tested, 0);
+    expect_count(0, t.stats.tested, "fragments tested");
     target_free(&t);
 }
 
@@ -373,7 +373,7 @@ static void unit_square_covers_one_pixel(void **state)
     Target t = make_target(6, 6);
     const double quad[4][2] = {{2, 3}, {3, 3}, {3, 4}, {2, 4}};
     draw_flat(&t, quad, 4, 2.0, 0);
-    assert_int_equal(t.stats.tested, 1);
+    expect_count(1, t.stats.tested, "fragments tested");
     assert_int_equal(t.face[3 * 6 + 2], 0);
     target_free(&t);
 }
@@ -389,10 +389,10 @@ static void tiny_triangles_cover_one_pixel_or_none(void **state)
     const double around[3][2] = {{2.4, 3.4}, {2.6, 3.4}, {2.5, 3.6}};
     const double beside[3][2] = {{2.7, 3.4}, {2.9, 3.4}, {2.8, 3.6}};
     draw_flat(&t, around, 3, 2.0, 0);
-    assert_int_equal(t.stats.tested, 1);
+    expect_count(1, t.stats.tested, "fragments tested");
     assert_int_equal(t.face[3 * 6 + 2], 0);
     draw_flat(&t, beside, 3, 2.0, 1);
-    assert_int_equal(t.stats.tested, 1);
+    expect_count(1, t.stats.tested, "fragments tested");
     target_free(&t);
 }
 
@@ -406,7 +406,7 @@ static void non_convex_polygon_is_refused(void **state)
     ScreenVertex dart[4] = {sv(0, 0, 2), sv(4, 3, 2), sv(8, 0, 2), sv(4, 8, 2)};
     assert_false(draw_polygon(&t, bowtie, 4, 0, FAR, DEPTH_PERSPECTIVE));
     assert_false(draw_polygon(&t, dart, 4, 0, FAR, DEPTH_PERSPECTIVE));
-    assert_int_equal(t.stats.tested, 0);
+    expect_count(0, t.stats.tested, "fragments tested");
     target_free(&t);
 }
 
@@ -491,7 +491,7 @@ static void stepping_along_a_long_span_stays_accurate(void **state)
     Target t = make_target(w, 1);
     ScreenVertex quad[4] = {sv(0, 0, 1), sv(w, 0, 100), sv(w, 1, 100), sv(0, 1, 1)};
     assert_true(draw_polygon(&t, quad, 4, 0, FAR, DEPTH_PERSPECTIVE));
-    assert_int_equal(t.stats.tested, w);
+    expect_count(w, t.stats.tested, "fragments tested");
     int worst_x = -1;
     double worst = 0;
     for (int x = 0; x < w; x++) {
@@ -532,7 +532,7 @@ static void huge_triangle_covers_the_screen_once(void **state)
     ScreenFace f = face_of(v, 3, &tri, true);
     DrawContext ctx = {0.1, FAR};
     draw_face(&t, &f, &ctx);
-    assert_int_equal(t.stats.tested, 64);
+    expect_count(64, t.stats.tested, "fragments tested");
     for (int i = 0; i < 64; i++)
         assert_int_equal(t.overdraw[i], 1);
     target_free(&t);
@@ -549,7 +549,7 @@ static void tall_polygon_walks_only_screen_rows(void **state)
     ScreenFace f = face_of(v, 4, tris, true);
     DrawContext ctx = {0.1, FAR};
     draw_face(&t, &f, &ctx);
-    assert_int_equal(t.stats.tested, 16);
+    expect_count(16, t.stats.tested, "fragments tested");
     target_free(&t);
 }
 
@@ -572,7 +572,7 @@ static void broken_corners_draw_nothing(void **state)
         draw_face(&t, &f, &ctx);
         assert_false(draw_polygon(&t, broken[k], 3, 0, FAR, DEPTH_PERSPECTIVE));
     }
-    assert_int_equal(t.stats.tested, 0);
+    expect_count(0, t.stats.tested, "fragments tested");
     target_free(&t);
 }
 
@@ -604,7 +604,7 @@ static void non_convex_face_is_drawn_as_its_triangles(void **state)
     const char *map[] = {".......#", "......#.", ".#...##.", "..#.##..",
                          "..####..", "...##...", "...##...", "........"};
     expect_map(&t, false, map, "dart drawn as two triangles");
-    assert_int_equal(t.stats.tested, 16);
+    expect_count(16, t.stats.tested, "fragments tested");
     target_free(&t);
 }
 
@@ -619,7 +619,7 @@ static void face_not_convex_on_screen_falls_back_to_triangles(void **state)
     ScreenFace f = face_of(v, 4, tris, true);
     DrawContext ctx = {0.1, FAR};
     draw_face(&t, &f, &ctx);
-    assert_int_equal(t.stats.tested, 16);
+    expect_count(16, t.stats.tested, "fragments tested");
     target_free(&t);
 }
 
