@@ -140,10 +140,10 @@ static void steps_write_a_render_and_a_ybuffer_per_segment(void **state)
             fail_msg("--steps did not write %s", NAMES[i]);
     /* After step 1 only red is there: columns 20..744. */
     Image s1 = read_png(path_join(steps.path, "step_0001.png"));
-    assert_int_equal(image_get(&s1, 19, 0).r, 0);
-    assert_int_equal(image_get(&s1, 20, 0).r, 255);
-    assert_int_equal(image_get(&s1, 744, 0).r, 255);
-    assert_int_equal(image_get(&s1, 745, 0).r, 0);
+    expect_count(0, image_get(&s1, 19, 0).r, "red at column 19 after step 1");
+    expect_count(255, image_get(&s1, 20, 0).r, "red at column 20 after step 1");
+    expect_count(255, image_get(&s1, 744, 0).r, "red at column 744 after step 1");
+    expect_count(0, image_get(&s1, 745, 0).r, "red at column 745 after step 1");
     image_free(&s1);
     /* The last step is the final picture. */
     Image s3 = read_png(path_join(steps.path, "step_0003.png")), final = read_png(out.path);
@@ -198,7 +198,7 @@ static void empty_segments_file_draws_nothing(void **state)
     run_result_free(&r);
     Image im = read_png(out.path);
     for (int x = 0; x < im.width; x++)
-        assert_int_equal(image_get(&im, x, 0).r + image_get(&im, x, 0).g + image_get(&im, x, 0).b, 0);
+        expect_pixel(&im, x, 0, (Rgb){0, 0, 0}, "nothing drawn");
     image_free(&im);
 }
 
@@ -232,14 +232,14 @@ static void bad_order_is_a_usage_error(void **state)
     Path out = in_dir(dir, "render.png");
     const char *args[] = {"--out", out.path, "--order", "12", NULL};
     expect_run_refused(PROGRAM, args, 2,
-                   "--order '12': expected each of 1..3 exactly once, as digits (e.g. 312) "
-                   "or separated by commas",
-                   out.path);
+                       "--order '12': expected each of 1..3 exactly once, as digits (e.g. 312) "
+                       "or separated by commas",
+                       out.path);
     const char *args2[] = {"--out", out.path, "--order", "332", NULL};
     expect_run_refused(PROGRAM, args2, 2,
-                   "--order '332': expected each of 1..3 exactly once, as digits (e.g. 312) "
-                   "or separated by commas",
-                   out.path);
+                       "--order '332': expected each of 1..3 exactly once, as digits (e.g. 312) "
+                       "or separated by commas",
+                       out.path);
 }
 
 static void missing_segments_file_fails_with_status_1(void **state)

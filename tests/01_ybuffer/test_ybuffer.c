@@ -306,7 +306,8 @@ static void segment_wider_than_the_screen_is_clipped_to_it(void **state)
     draw_segment(&yb, &wide, 0);
     for (int x = 0; x < WIDTH; x++)
         expect_y(&yb, x, 10, 0, "wide segment covers every column");
-    expect_count(WIDTH, yb.stats.tested, "column tests made"); /* columns -50..-1 and 800..900 not walked */
+    /* columns -50..-1 and 800..900 not walked */
+    expect_count(WIDTH, yb.stats.tested, "column tests made");
     ybuffer_free(&yb);
 }
 

@@ -178,21 +178,26 @@ static void bad_lesson_flags_are_usage_errors(void **state)
 {
     (void)state;
     const char *a1[] = {"--depth-interp", "linear", NULL};
-    expect_run_error(PROGRAM, a1, 2, "03_perspective_z: error: --depth-interp: 'linear' is not one of "
-                        "perspective, naive\n");
+    expect_run_error(PROGRAM, a1, 2,
+                     "03_perspective_z: error: --depth-interp: 'linear' is not one of "
+                     "perspective, naive\n");
     const char *a2[] = {"--bug", "clear-zero", NULL}; /* lesson 02's bugs stay in lesson 02 */
-    expect_run_error(PROGRAM, a2, 2, "03_perspective_z: error: --bug: 'clear-zero' is not one of "
-                        "negated-w\n");
+    expect_run_error(PROGRAM, a2, 2,
+                     "03_perspective_z: error: --bug: 'clear-zero' is not one of "
+                     "negated-w\n");
     const char *a3[] = {"--painter", NULL};
-    expect_run_error(PROGRAM, a3, 2, "03_perspective_z: error: unknown flag '--painter' (try --help)\n");
+    expect_run_error(PROGRAM, a3, 2,
+                     "03_perspective_z: error: unknown flag '--painter' (try --help)\n");
     const char *a4[] = {"--depth-interp", "naive", "--bug", "negated-w", NULL};
-    expect_run_error(PROGRAM, a4, 2, "03_perspective_z: error: --bug and --depth-interp naive cannot be "
-                        "used together\n");
+    expect_run_error(PROGRAM, a4, 2,
+                     "03_perspective_z: error: --bug and --depth-interp naive cannot be "
+                     "used together\n");
     const char *a5[] = {"--compare-naive", NULL};
     expect_run_error(PROGRAM, a5, 2, "03_perspective_z: error: --compare-naive needs a value\n");
     const char *a7[] = {"--out", "same.png", "--compare-naive", "same.png", NULL};
-    expect_run_error(PROGRAM, a7, 2, "03_perspective_z: error: --out and --compare-naive both name "
-                        "same.png\n");
+    expect_run_error(PROGRAM, a7, 2,
+                     "03_perspective_z: error: --out and --compare-naive both name "
+                     "same.png\n");
     const char *a6[] = {"--depth-interp", "naive", "--depth-interp", "naive", NULL};
     expect_run_error(PROGRAM, a6, 2, "03_perspective_z: error: --depth-interp given twice\n");
 }

@@ -94,7 +94,8 @@ static void inverse_depth_is_linear_at_chosen_pixels(void **state)
         double px = x + 0.5, py = y + 0.5;
         char what[64];
         snprintf(what, sizeof what, "perspective depth at pixel (%d,%d)", x, y);
-        expect_relative(target_depth_at(&right, x, y), 1 / (1 - px / 128 - 3 * py / 256), 1e-6, what);
+        expect_relative(target_depth_at(&right, x, y), 1 / (1 - px / 128 - 3 * py / 256), 1e-6,
+                        what);
         snprintf(what, sizeof what, "naive depth at pixel (%d,%d)", x, y);
         expect_relative(target_depth_at(&naive, x, y), 1 + px / 64 + 3 * py / 64, 1e-6, what);
     }
@@ -163,8 +164,8 @@ static void triangles3_depth_is_where_the_ray_meets_the_plane(void **state)
                      o->x, o->y, o->front, target_face_at(&t, o->x, o->y));
         char what[64];
         snprintf(what, sizeof what, "depth at pixel (%d,%d)", o->x, o->y);
-        expect_relative(target_depth_at(&t, o->x, o->y), ray_plane_depth(o->x, o->y, o->a, o->b, o->c),
-                        1e-5, what);
+        expect_relative(target_depth_at(&t, o->x, o->y),
+                        ray_plane_depth(o->x, o->y, o->a, o->b, o->c), 1e-5, what);
     }
     target_free(&t);
     render_free(&r);
@@ -199,10 +200,11 @@ static void huge_triangle_keeps_each_rules_depth_through_the_guard_band(void **s
             double wc = 1 - wa - wb;
             char what[96];
             snprintf(what, sizeof what, "perspective depth at (%d,%d) after the guard band", x, y);
-            expect_relative(target_depth_at(&right, x, y), 1 / (wa / a.d + wb / b.d + wc / c.d), 1e-6,
-                            what);
+            expect_relative(target_depth_at(&right, x, y), 1 / (wa / a.d + wb / b.d + wc / c.d),
+                            1e-6, what);
             snprintf(what, sizeof what, "naive depth at (%d,%d) after the guard band", x, y);
-            expect_relative(target_depth_at(&naive, x, y), wa * a.d + wb * b.d + wc * c.d, 1e-6, what);
+            expect_relative(target_depth_at(&naive, x, y), wa * a.d + wb * b.d + wc * c.d, 1e-6,
+                            what);
         }
     target_free(&right);
     target_free(&naive);

@@ -122,10 +122,10 @@ static void tested_pixels_are_as_derived(void **state)
             double py = y + 0.5;
             wrong += py > naive_line_row() && py < line_row();
         }
-    assert_int_equal(above, TESTED_ABOVE);
-    assert_int_equal(below, TESTED_BELOW);
-    assert_int_equal(above + below, TESTED_PIXELS);
-    assert_int_equal(wrong, NAIVE_WRONG);
+    expect_count(TESTED_ABOVE, above, "tested pixels above the line");
+    expect_count(TESTED_BELOW, below, "tested pixels below the line");
+    expect_count(TESTED_PIXELS, above + below, "tested pixels");
+    expect_count(NAIVE_WRONG, wrong, "tested pixels between the two lines");
 }
 
 /* Perspective (the default): every tested pixel shows the strip in front of
@@ -173,7 +173,7 @@ static void naive_rule_puts_the_seam_55_rows_too_high(void **state)
         }
     printf("  the naive rule shows the wrong strip at %ld of the %d tested pixels\n", wrong,
            TESTED_PIXELS);
-    assert_int_equal(wrong, NAIVE_WRONG);
+    expect_count(NAIVE_WRONG, wrong, "pixels the naive rule gets wrong");
     image_free(&im);
 }
 
@@ -209,7 +209,7 @@ static void compare_naive_marks_the_pixels_the_naive_rule_gets_wrong(void **stat
     snprintf(line, sizeof line, "  the naive rule shows another face at %ld pixels\n", marked);
     if (!strstr(summary, line))
         fail_msg("the summary should say\n%sit says\n%s", line, summary);
-    assert_true(marked >= NAIVE_WRONG);
+    expect_at_least(NAIVE_WRONG, marked, "marked pixels");
     free(summary);
     image_free(&im);
 }
@@ -253,8 +253,8 @@ static void depth_out_is_where_the_ray_meets_the_plane(void **state)
     Error err;
     if (!read_pfm(&depth, &w, &h, pfm, &err))
         fail_msg("%s", err.msg);
-    assert_int_equal(w, 800);
-    assert_int_equal(h, 600);
+    expect_count(800, w, "depth picture width");
+    expect_count(600, h, "depth picture height");
     /* Pixels on A above the line, on B below it (inside B's outline: B's
      * half-width there is 225 / d), and on A beside and in front of B. */
     const struct { int x, y; char strip; } at[7] = {

@@ -114,8 +114,8 @@ static void depth_out_writes_view_depth_not_its_inverse(void **state)
     Error err;
     if (!read_pfm(&d, &w, &h, pfm.path, &err))
         fail_msg("%s", err.msg);
-    assert_int_equal(w, 100);
-    assert_int_equal(h, 100);
+    expect_count(100, w, "depth picture width");
+    expect_count(100, h, "depth picture height");
     for (int y = 0; y < 100; y++)
         for (int x = 0; x < 100; x++) {
             float v = d[y * 100 + x];
@@ -234,7 +234,7 @@ static void depth_interp_naive_and_compare_naive(void **state)
     assert_non_null(line);
     assert_int_equal(sscanf(line, "  the naive rule shows another face at %ld pixels",
                             &differing), 1);
-    assert_true(differing > 0);
+    expect_at_least(1, differing, "pixels where the naive rule shows another face");
     assert_true(file_exists(marked.path));
     run_result_free(&r);
 }
@@ -250,14 +250,14 @@ static void bad_command_lines_are_refused_with_status_2(void **state)
     expect_run_refused(PROGRAM, unknown, 2, "unknown flag '--bogus' (try --help)", out.path);
     const char *scene[] = {"--out", out.path, "--scene", "nope", NULL};
     expect_run_refused(PROGRAM, scene, 2,
-                   "--scene: no scene named 'nope' (known: triangles3, interpenetrate, cubes, "
-                   "grazing, walls, knot)",
-                   out.path);
+                       "--scene: no scene named 'nope' (known: triangles3, interpenetrate, cubes, "
+                       "grazing, walls, knot)",
+                       out.path);
     const char *width[] = {"--out", out.path, "--width", "0", NULL};
     expect_run_refused(PROGRAM, width, 2, "--width: 0 is out of range (1 to 16384)", out.path);
     const char *interp[] = {"--out", out.path, "--depth-interp", "linear", NULL};
-    expect_run_refused(PROGRAM, interp, 2, "--depth-interp: 'linear' is not one of perspective, naive",
-                   out.path);
+    expect_run_refused(PROGRAM, interp, 2,
+                       "--depth-interp: 'linear' is not one of perspective, naive", out.path);
 }
 
 static void missing_obj_fails_with_status_1(void **state)

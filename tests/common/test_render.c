@@ -37,7 +37,7 @@ static void polygon_beyond_the_band_is_dropped(void **state)
     ScreenVertex in[3] = {{-3 * G, 0, 1}, {-2 * G, 0, 1}, {-2 * G, 50, 1}};
     ScreenVertex out[GUARD_BAND_MAX_OUT(3)];
     expect_count(0, guard_band_clip(in, 3, 800, 600, LINEAR_D, out), "corners after clipping");
-    expect_count(0, guard_band_clip(in, 2, 800, 600, LINEAR_D, out), "corners after clipping"); /* n < 3 */
+    expect_count(0, guard_band_clip(in, 2, 800, 600, LINEAR_D, out), "corners, n < 3");
 }
 
 /* Corner 0 at x = -3G, the others at x = +G: both edges from corner 0 cross
