@@ -14,7 +14,6 @@
 #include "test_support.h"
 
 #define PROGRAM "01_ybuffer"
-#define PATH_MAX_LEN 512
 #define TEXT_MAX 4096
 
 /* The summary of the default run; the runs are the ones derived in test_ybuffer.c. */
@@ -26,56 +25,13 @@
     "  nothing: 75 columns: 0-19, 745-799\n"                                     \
     "column tests: 1315 made, 1174 passed (y > stored), 141 failed\n"
 
-typedef struct {
-    char path[PATH_MAX_LEN];
-} Path;
-
-static Path in_dir(const char *dir, const char *file)
-{
-    Path p;
-    snprintf(p.path, sizeof p.path, "%s", path_join(dir, file));
-    return p;
-}
-
-static void write_text(const char *path, const char *text)
-{
-    FILE *fp = fopen(path, "w");
-    assert_non_null(fp);
-    fputs(text, fp);
-    assert_int_equal(fclose(fp), 0);
-}
-
-static Image read_png(const char *path)
-{
-    Image im;
-    Error err;
-    if (!image_read_png(&im, path, &err))
-        fail_msg("cannot read the lesson's output: %s", err.msg);
-    return im;
-}
-
 static void expect_same_pixels(const Image *a, const Image *b, const char *what)
 {
-    assert_int_equal(a->width, b->width);
-    assert_int_equal(a->height, b->height);
+    expect_count(b->width, a->width, "picture width");
+    expect_count(b->height, a->height, "picture height");
     size_t n = (size_t)a->width * (size_t)a->height * 3;
     if (memcmp(a->rgb, b->rgb, n) != 0)
         fail_msg("%s: the pictures differ", what);
-}
-
-/* A run that must fail: exact stderr line, exit status, and no output file. */
-static void expect_refused(const char *const *args, int status, const char *message,
-                           const char *no_file)
-{
-    RunResult r = run_program(PROGRAM, args);
-    char want[TEXT_MAX];
-    snprintf(want, sizeof want, "01_ybuffer: error: %s\n", message);
-    assert_string_equal(r.err, want);
-    assert_int_equal(r.status, status);
-    assert_string_equal(r.out, "");
-    if (file_exists(no_file))
-        fail_msg("%s was written by a run that failed", no_file);
-    run_result_free(&r);
 }
 
 static void default_run_prints_the_summary_and_writes_three_pictures(void **state)
@@ -88,7 +44,7 @@ static void default_run_prints_the_summary_and_writes_three_pictures(void **stat
                           scene.path, NULL};
     RunResult r = run_program(PROGRAM, args);
     assert_string_equal(r.err, "");
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     char want[TEXT_MAX];
     snprintf(want, sizeof want, DEFAULT_SUMMARY "wrote %s, %s, %s\n", out.path, yb.path,
              scene.path);
@@ -96,8 +52,8 @@ static void default_run_prints_the_summary_and_writes_three_pictures(void **stat
     run_result_free(&r);
 
     Image im = read_png(out.path);
-    assert_int_equal(im.width, 800);
-    assert_int_equal(im.height, 16); /* the one row, repeated to --height 16 */
+    expect_count(800, im.width, "picture width");
+    expect_count(16, im.height, "picture height"); /* the one row, repeated to --height 16 */
     expect_image(&im, "01_ybuffer", "default_render");
     image_free(&im);
     im = read_png(yb.path);
@@ -113,7 +69,7 @@ static void no_arguments_writes_out_01_ybuffer_png(void **state)
     (void)state;
     const char *args[] = {NULL};
     RunResult r = run_program(PROGRAM, args);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     assert_string_equal(r.out, DEFAULT_SUMMARY "wrote out/01_ybuffer.png\n");
     assert_true(file_exists("out/01_ybuffer.png"));
     run_result_free(&r);
@@ -126,7 +82,7 @@ static void missing_output_directories_are_created(void **state)
     Path out = in_dir(dir, "new/deeper/render.png");
     const char *args[] = {"--out", out.path, NULL};
     RunResult r = run_program(PROGRAM, args);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     assert_true(file_exists(out.path));
     run_result_free(&r);
 }
@@ -141,10 +97,10 @@ static void order_312_changes_only_the_tie_column(void **state)
     const char *args_a[] = {"--out", a.path, NULL};
     const char *args_b[] = {"--out", b.path, "--order", "312", NULL};
     RunResult r = run_program(PROGRAM, args_a);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     run_result_free(&r);
     r = run_program(PROGRAM, args_b);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     assert_non_null(strstr(r.out, "in the order 3 1 2\n"));
     assert_non_null(strstr(r.out, "  2 green   (120,434)-(444,400): won 267 columns: 120-329, 388-444\n"));
     assert_non_null(strstr(r.out, "  3 blue    (330,463)-(594,200): won 125 columns: 330-387, 445-511\n"));
@@ -173,7 +129,7 @@ static void steps_write_a_render_and_a_ybuffer_per_segment(void **state)
     Path steps = in_dir(dir, "steps"), out = in_dir(dir, "render.png");
     const char *args[] = {"--out", out.path, "--steps", steps.path, NULL};
     RunResult r = run_program(PROGRAM, args);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     run_result_free(&r);
     static const char *const NAMES[] = {"step_0000.png", "step_0000_depth.png",
                                         "step_0001.png", "step_0001_depth.png",
@@ -184,10 +140,10 @@ static void steps_write_a_render_and_a_ybuffer_per_segment(void **state)
             fail_msg("--steps did not write %s", NAMES[i]);
     /* After step 1 only red is there: columns 20..744. */
     Image s1 = read_png(path_join(steps.path, "step_0001.png"));
-    assert_int_equal(image_get(&s1, 19, 0).r, 0);
-    assert_int_equal(image_get(&s1, 20, 0).r, 255);
-    assert_int_equal(image_get(&s1, 744, 0).r, 255);
-    assert_int_equal(image_get(&s1, 745, 0).r, 0);
+    expect_count(0, image_get(&s1, 19, 0).r, "red at column 19 after step 1");
+    expect_count(255, image_get(&s1, 20, 0).r, "red at column 20 after step 1");
+    expect_count(255, image_get(&s1, 744, 0).r, "red at column 744 after step 1");
+    expect_count(0, image_get(&s1, 745, 0).r, "red at column 745 after step 1");
     image_free(&s1);
     /* The last step is the final picture. */
     Image s3 = read_png(path_join(steps.path, "step_0003.png")), final = read_png(out.path);
@@ -209,7 +165,7 @@ static void segments_file_with_the_default_scene_gives_the_default_picture(void 
     const char *args_a[] = {"--segments", file.path, "--out", a.path, NULL};
     const char *args_b[] = {"--out", b.path, NULL};
     RunResult r = run_program(PROGRAM, args_a);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     char want[TEXT_MAX];
     snprintf(want, sizeof want, DEFAULT_SUMMARY "wrote %s\n", a.path);
     assert_string_equal(r.out, want);
@@ -230,7 +186,7 @@ static void empty_segments_file_draws_nothing(void **state)
     write_text(file.path, "");
     const char *args[] = {"--segments", file.path, "--out", out.path, NULL};
     RunResult r = run_program(PROGRAM, args);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     char want[TEXT_MAX];
     snprintf(want, sizeof want,
              "no segments drawn into 800 columns\n"
@@ -242,7 +198,7 @@ static void empty_segments_file_draws_nothing(void **state)
     run_result_free(&r);
     Image im = read_png(out.path);
     for (int x = 0; x < im.width; x++)
-        assert_int_equal(image_get(&im, x, 0).r + image_get(&im, x, 0).g + image_get(&im, x, 0).b, 0);
+        expect_pixel(&im, x, 0, (Rgb){0, 0, 0}, "nothing drawn");
     image_free(&im);
 }
 
@@ -255,7 +211,7 @@ static void vertical_and_off_screen_segments_from_a_file(void **state)
     write_text(file.path, "100 10 100 50 255 255 0\n-300 5 -1 5 0 255 255\n");
     const char *args[] = {"--segments", file.path, "--out", out.path, "--width", "200", NULL};
     RunResult r = run_program(PROGRAM, args);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     char want[TEXT_MAX];
     snprintf(want, sizeof want,
              "2 segments drawn into 200 columns, in the order 1 2\n"
@@ -275,15 +231,15 @@ static void bad_order_is_a_usage_error(void **state)
     const char *dir = test_dir("l01_bad_order");
     Path out = in_dir(dir, "render.png");
     const char *args[] = {"--out", out.path, "--order", "12", NULL};
-    expect_refused(args, 2,
-                   "--order '12': expected each of 1..3 exactly once, as digits (e.g. 312) "
-                   "or separated by commas",
-                   out.path);
+    expect_run_refused(PROGRAM, args, 2,
+                       "--order '12': expected each of 1..3 exactly once, as digits (e.g. 312) "
+                       "or separated by commas",
+                       out.path);
     const char *args2[] = {"--out", out.path, "--order", "332", NULL};
-    expect_refused(args2, 2,
-                   "--order '332': expected each of 1..3 exactly once, as digits (e.g. 312) "
-                   "or separated by commas",
-                   out.path);
+    expect_run_refused(PROGRAM, args2, 2,
+                       "--order '332': expected each of 1..3 exactly once, as digits (e.g. 312) "
+                       "or separated by commas",
+                       out.path);
 }
 
 static void missing_segments_file_fails_with_status_1(void **state)
@@ -294,7 +250,7 @@ static void missing_segments_file_fails_with_status_1(void **state)
     const char *args[] = {"--out", out.path, "--segments", file.path, NULL};
     char msg[TEXT_MAX];
     snprintf(msg, sizeof msg, "cannot read %s: No such file or directory", file.path);
-    expect_refused(args, 1, msg, out.path);
+    expect_run_refused(PROGRAM, args, 1, msg, out.path);
 }
 
 static void malformed_segments_file_names_the_line(void **state)
@@ -307,11 +263,11 @@ static void malformed_segments_file_names_the_line(void **state)
     char msg[TEXT_MAX];
     snprintf(msg, sizeof msg, "%s:3: expected 7 numbers 'x0 y0 x1 y1 r g b', got 5",
              file.path);
-    expect_refused(args, 1, msg, out.path);
+    expect_run_refused(PROGRAM, args, 1, msg, out.path);
 
     write_text(file.path, "20 34 744 400 255 300 0\n");
     snprintf(msg, sizeof msg, "%s:1: g 300 is out of range 0..255", file.path);
-    expect_refused(args, 1, msg, out.path);
+    expect_run_refused(PROGRAM, args, 1, msg, out.path);
 }
 
 static void two_outputs_with_one_name_are_refused(void **state)
@@ -322,7 +278,7 @@ static void two_outputs_with_one_name_are_refused(void **state)
     const char *args[] = {"--out", out.path, "--scene-out", out.path, NULL};
     char msg[TEXT_MAX];
     snprintf(msg, sizeof msg, "--out and --scene-out both name %s", out.path);
-    expect_refused(args, 2, msg, out.path);
+    expect_run_refused(PROGRAM, args, 2, msg, out.path);
 }
 
 static void unknown_flag_and_bad_width_are_usage_errors(void **state)
@@ -331,11 +287,11 @@ static void unknown_flag_and_bad_width_are_usage_errors(void **state)
     const char *dir = test_dir("l01_usage");
     Path out = in_dir(dir, "x.png");
     const char *a1[] = {"--out", out.path, "--bogus", NULL};
-    expect_refused(a1, 2, "unknown flag '--bogus' (try --help)", out.path);
+    expect_run_refused(PROGRAM, a1, 2, "unknown flag '--bogus' (try --help)", out.path);
     const char *a2[] = {"--out", out.path, "--width", "0", NULL};
-    expect_refused(a2, 2, "--width: 0 is out of range (1 to 16384)", out.path);
+    expect_run_refused(PROGRAM, a2, 2, "--width: 0 is out of range (1 to 16384)", out.path);
     const char *a3[] = {"--out", out.path, "--order", NULL};
-    expect_refused(a3, 2, "--order needs a value", out.path);
+    expect_run_refused(PROGRAM, a3, 2, "--order needs a value", out.path);
 }
 
 static void unwritable_output_fails_with_status_1(void **state)
@@ -353,7 +309,7 @@ static void unwritable_output_fails_with_status_1(void **state)
     if (strncmp(r.err, want, strlen(want)) != 0)
         fail_msg("stderr: \"%s\", expected it to start with \"%s\"", r.err, want);
     assert_ptr_equal(strchr(r.err, '\n'), r.err + strlen(r.err) - 1); /* one line */
-    assert_int_equal(r.status, 1);
+    expect_count(1, r.status, "exit status");
     assert_false(file_exists(out.path));
     run_result_free(&r);
 }

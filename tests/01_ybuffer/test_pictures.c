@@ -22,14 +22,6 @@
 static const Rgb RED = {255, 0, 0}, GREEN = {0, 255, 0}, BLUE = {0, 0, 255};
 static const Rgb BLACK = {0, 0, 0};
 
-static void expect_pixel(const Image *im, int x, int row, Rgb want, const char *why)
-{
-    Rgb got = image_get(im, x, row);
-    if (got.r != want.r || got.g != want.g || got.b != want.b)
-        fail_msg("pixel (%d, row %d) (%s): got (%d,%d,%d), expected (%d,%d,%d)", x, row, why,
-                 got.r, got.g, got.b, want.r, want.g, want.b);
-}
-
 static Rgb grey(int g)
 {
     return (Rgb){(uint8_t)g, (uint8_t)g, (uint8_t)g};
@@ -57,8 +49,8 @@ static void render_shows_the_runs_on_every_row(void **state)
     Image im;
     Error err;
     assert_true(render_picture(&yb, segs, RENDER_HEIGHT, &im, &err));
-    assert_int_equal(im.width, WIDTH);
-    assert_int_equal(im.height, RENDER_HEIGHT);
+    expect_count(WIDTH, im.width, "picture width");
+    expect_count(RENDER_HEIGHT, im.height, "picture height");
     /* The boundary columns of test_ybuffer.c, on the top and the bottom row. */
     static const struct { int x; Rgb c; } COLUMNS[] = {
         {0, {0, 0, 0}},       {19, {0, 0, 0}},      {20, {255, 0, 0}},  {119, {255, 0, 0}},
@@ -117,8 +109,8 @@ static void scene_puts_world_y_up(void **state)
     Image im;
     Error err;
     assert_true(scene_picture(segs, count, &yb, &im, &err));
-    assert_int_equal(im.width, WIDTH);
-    assert_int_equal(im.height, SCENE_HEIGHT);
+    expect_count(WIDTH, im.width, "picture width");
+    expect_count(SCENE_HEIGHT, im.height, "picture height");
     /* Red's left end (20, 34) at row 499 - 34 = 465, one pixel thicker above and below. */
     expect_pixel(&im, 20, 464, RED, "red's left end, thickened");
     expect_pixel(&im, 20, 465, RED, "red's left end");

@@ -43,7 +43,7 @@ static void expect_parse_error(const char *text, size_t len, const char *message
         fail_msg("parse_segments accepted bad input, expected \"%s\"", message);
     assert_string_equal(err.msg, message);
     assert_null(segs);
-    assert_int_equal(count, 0);
+    expect_count(0, count, "segments");
 }
 
 #define EXPECT_PARSE_ERROR(text, message) expect_parse_error((text), strlen(text), (message))
@@ -60,7 +60,7 @@ static void segments_file_with_comments_blanks_and_crlf(void **state)
     Segment *segs;
     int count;
     parse_text(text, &segs, &count);
-    assert_int_equal(count, 3);
+    expect_count(3, count, "segments");
     expect_segment(&segs[0], 20, 34, 744, 400, 255, 0, 0, 1);
     expect_segment(&segs[1], 120, 434, 444, 400, 0, 255, 0, 2);
     expect_segment(&segs[2], 330, 463, 594, 200, 0, 0, 255, 3);
@@ -75,7 +75,7 @@ static void segments_file_accepts_the_limits(void **state)
     parse_text("-1000000 1000000 1000000 -1000000 0 255 0\n-5 -7 -5 -7 255 255 255\n"
                "00000000000000000001 -0 +0 0 0 0 0255\n",
                &segs, &count);
-    assert_int_equal(count, 3);
+    expect_count(3, count, "segments");
     expect_segment(&segs[2], 1, 0, 0, 0, 0, 0, 255, 3); /* leading zeros, signed zeros */
     expect_segment(&segs[0], -1000000, 1000000, 1000000, -1000000, 0, 255, 0, 1);
     expect_segment(&segs[1], -5, -7, -5, -7, 255, 255, 255, 2);
@@ -90,7 +90,7 @@ static void empty_and_comment_only_files_have_no_segments(void **state)
         Segment *segs;
         int count = -1;
         parse_text(texts[i], &segs, &count);
-        assert_int_equal(count, 0);
+        expect_count(0, count, "segments");
         free(segs);
     }
 }
@@ -174,7 +174,7 @@ static void segments_file_is_read_from_disk(void **state)
     Error err;
     if (!read_segments(path, &segs, &count, &err))
         fail_msg("read_segments: %s", err.msg);
-    assert_int_equal(count, 2);
+    expect_count(2, count, "segments");
     expect_segment(&segs[0], 1, 2, 3, 4, 5, 6, 7, 1);
     expect_segment(&segs[1], -1, -2, -3, -4, 0, 0, 0, 2);
     free(segs);
@@ -187,7 +187,7 @@ static void default_scene_is_red_green_blue(void **state)
     int count;
     Error err;
     assert_true(default_segments(&segs, &count, &err));
-    assert_int_equal(count, 3);
+    expect_count(3, count, "segments");
     expect_segment(&segs[0], 20, 34, 744, 400, 255, 0, 0, 1);
     expect_segment(&segs[1], 120, 434, 444, 400, 0, 255, 0, 2);
     expect_segment(&segs[2], 330, 463, 594, 200, 0, 0, 255, 3);

@@ -36,6 +36,7 @@
 
 #include <stdio.h>
 
+#include "test_support.h"
 #include "ybuffer.h"
 
 #define WIDTH 800
@@ -156,9 +157,9 @@ static void ybuffer_after_each_step(void **state)
     /* Tests made: one per column walked, 725 + 325 + 265 = 1315. Red and green
      * pass everywhere; blue passes on 330..386 (57) and 445..511 (67) = 124,
      * fails on 387..444 (58) and 512..594 (83) = 141. */
-    assert_int_equal(yb.stats.tested, 1315);
-    assert_int_equal(yb.stats.passed, 725 + 325 + 124);
-    assert_int_equal(yb.stats.failed, 141);
+    expect_count(1315, yb.stats.tested, "column tests made");
+    expect_count(725 + 325 + 124, yb.stats.passed, "column tests passed");
+    expect_count(141, yb.stats.failed, "column tests failed");
     ybuffer_free(&yb);
 }
 
@@ -266,7 +267,7 @@ static void equal_segments_first_drawn_keeps_every_column(void **state)
     draw_segment(&yb, &b, 1);
     for (int x = 10; x <= 20; x++)
         expect_y(&yb, x, 5, 0, "same y: the first drawn stays");
-    assert_int_equal(yb.stats.failed, 11); /* all of b's 11 columns */
+    expect_count(11, yb.stats.failed, "column tests failed"); /* all of b's 11 columns */
     ybuffer_free(&yb);
 }
 
@@ -286,12 +287,12 @@ static void vertical_segment_is_one_column_at_its_nearest_y(void **state)
         expect_y(&yb, 99, YBUFFER_CLEARED, NO_SEGMENT, "left of the vertical segment");
         expect_y(&yb, 100, 50, 0, "vertical: max(y0, y1)");
         expect_y(&yb, 101, YBUFFER_CLEARED, NO_SEGMENT, "right of the vertical segment");
-        assert_int_equal(yb.stats.tested, 1);
+        expect_count(1, yb.stats.tested, "column tests made");
     }
     clear_ybuffer(&yb);
     draw_segment(&yb, &point, 0);
     expect_y(&yb, 5, 7, 0, "a single point");
-    assert_int_equal(yb.stats.tested, 1);
+    expect_count(1, yb.stats.tested, "column tests made");
     ybuffer_free(&yb);
 }
 
@@ -305,7 +306,8 @@ static void segment_wider_than_the_screen_is_clipped_to_it(void **state)
     draw_segment(&yb, &wide, 0);
     for (int x = 0; x < WIDTH; x++)
         expect_y(&yb, x, 10, 0, "wide segment covers every column");
-    assert_int_equal(yb.stats.tested, WIDTH); /* columns -50..-1 and 800..900 not walked */
+    /* columns -50..-1 and 800..900 not walked */
+    expect_count(WIDTH, yb.stats.tested, "column tests made");
     ybuffer_free(&yb);
 }
 
@@ -321,7 +323,7 @@ static void segment_outside_the_screen_wins_nothing(void **state)
     draw_segment(&yb, &right, 1);
     for (int x = 0; x < WIDTH; x++)
         expect_y(&yb, x, YBUFFER_CLEARED, NO_SEGMENT, "segments off screen");
-    assert_int_equal(yb.stats.tested, 0);
+    expect_count(0, yb.stats.tested, "column tests made");
     ybuffer_free(&yb);
 }
 
@@ -340,7 +342,7 @@ static void segment_at_the_coordinate_limit(void **state)
     expect_y(&yb, 0, 500000, 0, "y(0)");
     expect_y(&yb, 1, 500001, 0, "y(1) = 500000.5, halves up");
     expect_y(&yb, 799, 500400, 0, "y(799) = 500399.5, halves up");
-    assert_int_equal(yb.stats.tested, WIDTH);
+    expect_count(WIDTH, yb.stats.tested, "column tests made");
     ybuffer_free(&yb);
 }
 

@@ -24,13 +24,8 @@
 /* Runs the lesson, expecting success, and reads back the picture it wrote. */
 static void render_to_image(const char *const *args, const char *out, Image *im)
 {
-    RunResult r = run_program(PROGRAM, args);
-    if (r.status != 0)
-        fail_msg("02_zbuffer exited with %d: %s", r.status, r.err);
-    run_result_free(&r);
-    Error err;
-    if (!image_read_png(im, out, &err))
-        fail_msg("reading %s: %s", out, err.msg);
+    free(run_ok(PROGRAM, args));
+    *im = read_png(out);
 }
 
 /* ---- Expected images ---------------------------------------------------------- */
@@ -42,8 +37,8 @@ static void default_render_matches_expected(void **state)
     const char *args[] = {"--out", out, NULL};
     Image im;
     render_to_image(args, out, &im);
-    assert_int_equal(im.width, 800); /* the defaults: 800 x 600, triangles3, flat */
-    assert_int_equal(im.height, 600);
+    expect_count(800, im.width, "picture width"); /* the defaults: 800 x 600, triangles3, flat */
+    expect_count(600, im.height, "picture height");
     expect_image(&im, GROUP, "default");
     image_free(&im);
 }
@@ -144,7 +139,7 @@ static void summary_agrees_with_the_written_files(void **state)
     const char *args[] = {"--width", "200", "--height", "150", "--out", png, "--depth-out",
                           pfm, "--overdraw-out", pgm, NULL};
     RunResult r = run_program(PROGRAM, args);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
 
     const char *first = "02_zbuffer: scene triangles3 (3 faces): 3 triangles drawn, "
                         "0 dropped at the near plane\n";
@@ -158,7 +153,7 @@ static void summary_agrees_with_the_written_files(void **state)
                       "%lf over %ld covered pixels", &tested, &passed, &failed, &average,
                &covered) != 5)
         fail_msg("second line of the summary not understood:\n%s", line2);
-    assert_int_equal(tested, passed + failed);
+    expect_count(passed + failed, tested, "fragments tested (passed + failed)");
     for (int k = 0; k < 3; k++) {
         const char *path = k == 0 ? png : k == 1 ? pfm : pgm;
         char wrote[4200];
@@ -170,16 +165,16 @@ static void summary_agrees_with_the_written_files(void **state)
 
     int w, h;
     uint32_t *over = read_pgm16(pgm, &w, &h);
-    assert_int_equal(w, 200);
-    assert_int_equal(h, 150);
+    expect_count(200, w, "overdraw picture width");
+    expect_count(150, h, "overdraw picture height");
     unsigned long long sum = 0;
     long nonzero = 0;
     for (int i = 0; i < w * h; i++) {
         sum += over[i];
         nonzero += over[i] > 0;
     }
-    assert_int_equal(sum, tested);
-    assert_int_equal(nonzero, covered);
+    expect_count(tested, sum, "fragments in the overdraw picture");
+    expect_count(covered, nonzero, "covered pixels in the overdraw picture");
     assert_true(fabs(average - (double)tested / covered) < 0.006);
     free(over);
 
@@ -214,48 +209,41 @@ static void obj_file_is_framed_and_coloured(void **state)
                         "--out", id_png, NULL};
     Image im;
     render_to_image(a1, id_png, &im);
-    Rgb c = image_get(&im, 32, 24);
-    assert_int_equal(id_colour_face(c), 0);
-    c = image_get(&im, 0, 0);
-    assert_int_equal(id_colour_face(c), -1); /* black: nothing there */
+    expect_face_at(&im, 32, 24, 0, "");
+    expect_face_at(&im, 0, 0, NO_FACE, "black: nothing there");
     image_free(&im);
 
     const char *a2[] = {"--obj", obj, "--width", "64", "--height", "48", "--out", flat_png,
                         NULL};
     render_to_image(a2, flat_png, &im);
-    c = image_get(&im, 32, 24);
-    assert_true(c.r > 64 && c.g == 0 && c.b == 0);
+    Rgb c = image_get(&im, 32, 24);
+    expect_colour_that(c, c.r > 64 && c.g == 0 && c.b == 0, "pixel (32, 24)",
+                       "the red of material Kd 1 0 0, lit");
     image_free(&im);
 }
 
 /* ---- Errors ------------------------------------------------------------------ */
 
-static void expect_error(const char *const *args, int status, const char *message)
-{
-    RunResult r = run_program(PROGRAM, args);
-    if (r.status != status || strcmp(r.err, message) != 0)
-        fail_msg("exit %d, stderr:\n%s\nexpected exit %d, stderr:\n%s", r.status, r.err,
-                 status, message);
-    run_result_free(&r);
-}
-
 static void bad_lesson_flags_are_usage_errors(void **state)
 {
     (void)state;
     const char *a1[] = {"--bug", "off-by-one", NULL};
-    expect_error(a1, 2,
-                 "02_zbuffer: error: --bug: 'off-by-one' is not one of separate-buffers, "
-                 "clear-zero\n");
+    expect_run_error(PROGRAM, a1, 2,
+                     "02_zbuffer: error: --bug: 'off-by-one' is not one of separate-buffers, "
+                     "clear-zero\n");
     const char *a2[] = {"--painter", "--bug", "clear-zero", NULL};
-    expect_error(a2, 2, "02_zbuffer: error: --painter and --bug cannot be used together\n");
+    expect_run_error(PROGRAM, a2, 2,
+                     "02_zbuffer: error: --painter and --bug cannot be used together\n");
     const char *a3[] = {"--bug", NULL};
-    expect_error(a3, 2, "02_zbuffer: error: --bug needs a value\n");
+    expect_run_error(PROGRAM, a3, 2, "02_zbuffer: error: --bug needs a value\n");
     const char *a4[] = {"--ascii", NULL}; /* the default 800x600 is too big to read as text */
-    expect_error(a4, 2, "02_zbuffer: error: --ascii: the image is 800x600; --ascii prints at "
-                        "most 120x60 (use --width and --height)\n");
+    expect_run_error(PROGRAM, a4, 2,
+                     "02_zbuffer: error: --ascii: the image is 800x600; --ascii prints at "
+                     "most 120x60 (use --width and --height)\n");
     const char *a5[] = {"--painter", "--steps", "frames", NULL}; /* no one depth buffer to show */
-    expect_error(a5, 2, "02_zbuffer: error: --steps follows one depth buffer face by face; it "
-                        "cannot be used with --painter or --bug separate-buffers\n");
+    expect_run_error(PROGRAM, a5, 2,
+                     "02_zbuffer: error: --steps follows one depth buffer face by face; it "
+                     "cannot be used with --painter or --bug separate-buffers\n");
 }
 
 static void missing_obj_fails_without_output(void **state)
@@ -267,7 +255,7 @@ static void missing_obj_fails_without_output(void **state)
     char message[1200];
     snprintf(message, sizeof message,
              "02_zbuffer: error: cannot read %s: No such file or directory\n", args[1]);
-    expect_error(args, 1, message);
+    expect_run_error(PROGRAM, args, 1, message);
     assert_false(file_exists(out));
 }
 
@@ -286,16 +274,16 @@ static void unwritable_output_fails_cleanly(void **state)
     snprintf(message, sizeof message,
              "02_zbuffer: error: cannot create directory %s: a file of that name exists\n",
              blocker);
-    expect_error(args, 1, message);
+    expect_run_error(PROGRAM, args, 1, message);
 }
 
 static void bad_camera_is_a_usage_error(void **state)
 {
     (void)state;
     const char *args[] = {"--near", "5", "--far", "1", NULL};
-    expect_error(args, 2,
-                 "02_zbuffer: error: --far: 1 is out of range (far must be greater than "
-                 "near, 5)\n");
+    expect_run_error(PROGRAM, args, 2,
+                     "02_zbuffer: error: --far: 1 is out of range (far must be greater than "
+                     "near, 5)\n");
 }
 
 int main(void)

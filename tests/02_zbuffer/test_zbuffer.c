@@ -33,16 +33,6 @@ static void load_triangles3(Render *r, Target *t, const Rasterizer *rz)
         fail_msg("render_target_init: %s", err.msg);
 }
 
-static int32_t face_at(const Target *t, int x, int y)
-{
-    return t->face[(size_t)y * (size_t)t->width + (size_t)x];
-}
-
-static float depth_at(const Target *t, int x, int y)
-{
-    return t->depth[(size_t)y * (size_t)t->width + (size_t)x];
-}
-
 /* Three pixels, one in each overlap of triangles3, picked by hand at 200 x 150.
  * The camera maps (x, y, z) to d = 10 - z, x_s = (1.81066 x / d + 1) * 100,
  * y_s = (1 - 2.41421 y / d) * 75 (f = 1 / tan 22.5 deg = 2.41421, over the
@@ -74,9 +64,9 @@ static void zbuffer_resolves_the_cycle_of_triangles3(void **state)
     assert_true(render_faces(&r, &t, &ZBUFFER, NULL, 0, NULL, NULL, &err));
     for (int k = 0; k < 3; k++) {
         const Overlap *o = &OVERLAPS[k];
-        if (face_at(&t, o->x, o->y) != o->front)
+        if (target_face_at(&t, o->x, o->y) != o->front)
             fail_msg("pixel (%d,%d): %s should cover %s, the z-buffer shows face %d", o->x,
-                     o->y, NAMES[o->front], NAMES[o->back], face_at(&t, o->x, o->y));
+                     o->y, NAMES[o->front], NAMES[o->back], target_face_at(&t, o->x, o->y));
     }
     target_free(&t);
     render_free(&r);
@@ -92,10 +82,10 @@ static void painter_gets_triangles3_wrong(void **state)
     Error err;
     load_triangles3(&r, &t, &ZBUFFER);
     assert_true(draw_painter(&r, &t, &ZBUFFER, &err));
-    assert_int_equal(face_at(&t, 70, 90), BLUE);  /* wrong: red is nearer here */
-    assert_int_equal(face_at(&t, 100, 40), BLUE); /* right by luck of the order */
-    assert_int_equal(face_at(&t, 125, 90), GREEN);
-    assert_int_equal(t.stats.failed, 0); /* no depth test ever said no */
+    expect_target_face(&t, 70, 90, BLUE, "");  /* wrong: red is nearer here */
+    expect_target_face(&t, 100, 40, BLUE, ""); /* right by luck of the order */
+    expect_target_face(&t, 125, 90, GREEN, "");
+    expect_count(0, t.stats.failed, "fragments failed"); /* no depth test ever said no */
     target_free(&t);
     render_free(&r);
 }
@@ -115,7 +105,7 @@ static void no_painting_order_is_right_for_triangles3(void **state)
         assert_true(draw_in_own_buffers(&r, &t, &ZBUFFER, orders[p], alone, 3, &err));
         int right = 0;
         for (int k = 0; k < 3; k++)
-            right += face_at(&t, OVERLAPS[k].x, OVERLAPS[k].y) == OVERLAPS[k].front;
+            right += target_face_at(&t, OVERLAPS[k].x, OVERLAPS[k].y) == OVERLAPS[k].front;
         if (right == 3)
             fail_msg("painting in order %d %d %d got every overlap right", orders[p][0],
                      orders[p][1], orders[p][2]);
@@ -135,7 +125,7 @@ static void depth_of_triangles3_is_linear_on_the_screen(void **state)
     assert_true(render_faces(&r, &t, &ZBUFFER, NULL, 0, NULL, NULL, &err));
     const double naive[3] = {9.489, 9.466, 9.515}, perspective[3] = {9.419, 9.398, 9.442};
     for (int k = 0; k < 3; k++) {
-        double d = depth_at(&t, OVERLAPS[k].x, OVERLAPS[k].y);
+        double d = target_depth_at(&t, OVERLAPS[k].x, OVERLAPS[k].y);
         if (fabs(d - naive[k]) > 1e-3)
             fail_msg("pixel (%d,%d): depth %.5f, the linear interpolation by hand gives %.3f",
                      OVERLAPS[k].x, OVERLAPS[k].y, d, naive[k]);
@@ -167,9 +157,9 @@ static void depth_is_interpolated_linearly_at_chosen_pixels(void **state)
     const struct { int x, y; float d; } want[4] = {
         {15, 31, 3.453125f}, {40, 10, 2.921875f}, {0, 0, 1.046875f}, {62, 0, 2.984375f}};
     for (int k = 0; k < 4; k++)
-        if (depth_at(&t, want[k].x, want[k].y) != want[k].d)
+        if (target_depth_at(&t, want[k].x, want[k].y) != want[k].d)
             fail_msg("pixel (%d,%d): depth %.9g, by hand %.9g", want[k].x, want[k].y,
-                     depth_at(&t, want[k].x, want[k].y), want[k].d);
+                     target_depth_at(&t, want[k].x, want[k].y), want[k].d);
     target_free(&t);
 }
 
@@ -193,8 +183,8 @@ static void fragments_beyond_far_are_discarded_untested(void **state)
     ScreenFace f = screen_triangle(v, 0);
     DrawContext ctx = {0.1, 50};
     draw_face(&t, &f, &ctx);
-    assert_int_equal(t.stats.tested, 0);
-    assert_int_equal(face_at(&t, 3, 3), NO_FACE);
+    expect_count(0, t.stats.tested, "fragments tested");
+    expect_target_face(&t, 3, 3, NO_FACE, "");
     target_free(&t);
 }
 
@@ -258,10 +248,10 @@ static void separate_buffers_let_the_last_object_cover_the_first(void **state)
     /* One buffer: A (d 2) is in front at the centre. Separate buffers: B was
      * drawn after A into a buffer where A does not exist, and within B its
      * nearer face 2 (d about 6) still hides face 1 (d 8). */
-    assert_int_equal(face_at(&right, 32, 32), 0);
-    assert_int_equal(face_at(&wrong, 32, 32), 2);
+    expect_target_face(&right, 32, 32, 0, "");
+    expect_target_face(&wrong, 32, 32, 2, "");
     /* --depth-out shows the depth of what is on screen: face 2's, not A's 2. */
-    assert_true(depth_at(&wrong, 32, 32) > 5);
+    assert_true(target_depth_at(&wrong, 32, 32) > 5);
     target_free(&right);
     target_free(&wrong);
     render_free(&r);
@@ -276,9 +266,9 @@ static void clear_to_zero_draws_nothing(void **state)
     Error err;
     load_triangles3(&r, &t, &CLEAR_ZERO_BUG);
     assert_true(render_faces(&r, &t, &ZBUFFER, NULL, 0, NULL, NULL, &err));
-    assert_true(t.stats.tested > 0);
-    assert_int_equal(t.stats.passed, 0);
-    assert_int_equal(t.stats.failed, t.stats.tested);
+    expect_at_least(1, t.stats.tested, "fragments tested");
+    expect_count(0, t.stats.passed, "fragments passed");
+    expect_count(t.stats.tested, t.stats.failed, "fragments failed");
     for (int i = 0; i < t.width * t.height; i++)
         if (t.face[i] != NO_FACE)
             fail_msg("pixel %d was drawn with the buffer cleared to 0", i);

@@ -21,27 +21,6 @@
 #define PROGRAM "03_perspective_z"
 #define GROUP "03_perspective_z"
 
-/* Runs a program, expecting success; returns its stdout. */
-static char *run_ok(const char *program, const char *const *args)
-{
-    RunResult r = run_program(program, args);
-    if (r.status != 0)
-        fail_msg("%s exited with %d: %s", program, r.status, r.err);
-    char *out = r.out;
-    r.out = NULL;
-    run_result_free(&r);
-    return out;
-}
-
-static Image read_png(const char *path)
-{
-    Image im;
-    Error err;
-    if (!image_read_png(&im, path, &err))
-        fail_msg("reading %s: %s", path, err.msg);
-    return im;
-}
-
 /* ---- Expected images ---------------------------------------------------------- */
 
 /* No flag but --out: grazing, flat, 800 x 600, the perspective rule. */
@@ -53,8 +32,8 @@ static void default_render_matches_expected(void **state)
     const char *args[] = {"--out", out, NULL};
     free(run_ok(PROGRAM, args));
     Image im = read_png(out);
-    assert_int_equal(im.width, 800);
-    assert_int_equal(im.height, 600);
+    expect_count(800, im.width, "picture width");
+    expect_count(600, im.height, "picture height");
     expect_image(&im, GROUP, "default");
     image_free(&im);
 }
@@ -195,36 +174,32 @@ static void summary_names_the_rule_and_the_comparison(void **state)
 
 /* ---- Errors ------------------------------------------------------------------ */
 
-static void expect_error(const char *const *args, int status, const char *message)
-{
-    RunResult r = run_program(PROGRAM, args);
-    if (r.status != status || strcmp(r.err, message) != 0)
-        fail_msg("exit %d, stderr:\n%s\nexpected exit %d, stderr:\n%s", r.status, r.err,
-                 status, message);
-    run_result_free(&r);
-}
-
 static void bad_lesson_flags_are_usage_errors(void **state)
 {
     (void)state;
     const char *a1[] = {"--depth-interp", "linear", NULL};
-    expect_error(a1, 2, "03_perspective_z: error: --depth-interp: 'linear' is not one of "
-                        "perspective, naive\n");
+    expect_run_error(PROGRAM, a1, 2,
+                     "03_perspective_z: error: --depth-interp: 'linear' is not one of "
+                     "perspective, naive\n");
     const char *a2[] = {"--bug", "clear-zero", NULL}; /* lesson 02's bugs stay in lesson 02 */
-    expect_error(a2, 2, "03_perspective_z: error: --bug: 'clear-zero' is not one of "
-                        "negated-w\n");
+    expect_run_error(PROGRAM, a2, 2,
+                     "03_perspective_z: error: --bug: 'clear-zero' is not one of "
+                     "negated-w\n");
     const char *a3[] = {"--painter", NULL};
-    expect_error(a3, 2, "03_perspective_z: error: unknown flag '--painter' (try --help)\n");
+    expect_run_error(PROGRAM, a3, 2,
+                     "03_perspective_z: error: unknown flag '--painter' (try --help)\n");
     const char *a4[] = {"--depth-interp", "naive", "--bug", "negated-w", NULL};
-    expect_error(a4, 2, "03_perspective_z: error: --bug and --depth-interp naive cannot be "
-                        "used together\n");
+    expect_run_error(PROGRAM, a4, 2,
+                     "03_perspective_z: error: --bug and --depth-interp naive cannot be "
+                     "used together\n");
     const char *a5[] = {"--compare-naive", NULL};
-    expect_error(a5, 2, "03_perspective_z: error: --compare-naive needs a value\n");
+    expect_run_error(PROGRAM, a5, 2, "03_perspective_z: error: --compare-naive needs a value\n");
     const char *a7[] = {"--out", "same.png", "--compare-naive", "same.png", NULL};
-    expect_error(a7, 2, "03_perspective_z: error: --out and --compare-naive both name "
-                        "same.png\n");
+    expect_run_error(PROGRAM, a7, 2,
+                     "03_perspective_z: error: --out and --compare-naive both name "
+                     "same.png\n");
     const char *a6[] = {"--depth-interp", "naive", "--depth-interp", "naive", NULL};
-    expect_error(a6, 2, "03_perspective_z: error: --depth-interp given twice\n");
+    expect_run_error(PROGRAM, a6, 2, "03_perspective_z: error: --depth-interp given twice\n");
 }
 
 /* --compare-naive into a path that cannot be made: status 1, one line, and
@@ -246,7 +221,7 @@ static void unwritable_comparison_fails_cleanly(void **state)
     snprintf(message, sizeof message,
              "03_perspective_z: error: cannot create directory %s: a file of that name exists\n",
              blocker);
-    expect_error(args, 1, message);
+    expect_run_error(PROGRAM, args, 1, message);
     assert_false(file_exists(cmp));
 }
 
@@ -261,7 +236,7 @@ static void missing_obj_fails_without_output(void **state)
     char message[9000];
     snprintf(message, sizeof message,
              "03_perspective_z: error: cannot read %s: No such file or directory\n", obj);
-    expect_error(args, 1, message);
+    expect_run_error(PROGRAM, args, 1, message);
     assert_false(file_exists(out));
 }
 

@@ -37,16 +37,6 @@ static void draw_screen_triangle(Target *t, const Rasterizer *rz, ScreenVertex a
     rz->draw_face(t, &f, &ctx);
 }
 
-static int32_t face_at(const Target *t, int x, int y)
-{
-    return t->face[(size_t)y * (size_t)t->width + (size_t)x];
-}
-
-static float stored_at(const Target *t, int x, int y)
-{
-    return t->depth[(size_t)y * (size_t)t->width + (size_t)x];
-}
-
 static void expect_relative(double got, double want, double tolerance, const char *what)
 {
     if (!(fabs(got - want) <= tolerance * fabs(want)))
@@ -103,13 +93,14 @@ static void inverse_depth_is_linear_at_chosen_pixels(void **state)
         double px = x + 0.5, py = y + 0.5;
         char what[64];
         snprintf(what, sizeof what, "perspective depth at pixel (%d,%d)", x, y);
-        expect_relative(stored_at(&right, x, y), 1 / (1 - px / 128 - 3 * py / 256), 1e-6, what);
+        expect_relative(target_depth_at(&right, x, y), 1 / (1 - px / 128 - 3 * py / 256), 1e-6,
+                        what);
         snprintf(what, sizeof what, "naive depth at pixel (%d,%d)", x, y);
-        expect_relative(stored_at(&naive, x, y), 1 + px / 64 + 3 * py / 64, 1e-6, what);
+        expect_relative(target_depth_at(&naive, x, y), 1 + px / 64 + 3 * py / 64, 1e-6, what);
     }
     /* The two rules agree at the corners and nowhere inside: the naive depth
      * is always the larger, since the average of d exceeds 1 / (average of 1/d). */
-    assert_true(stored_at(&naive, 15, 31) - stored_at(&right, 15, 31) > 0.7);
+    assert_true(target_depth_at(&naive, 15, 31) - target_depth_at(&right, 15, 31) > 0.7);
     target_free(&right);
     target_free(&naive);
 }
@@ -167,13 +158,13 @@ static void triangles3_depth_is_where_the_ray_meets_the_plane(void **state)
     assert_true(render_faces(&r, &t, &ZBUFFER, NULL, 0, NULL, NULL, &err));
     for (int k = 0; k < 3; k++) {
         const Overlap *o = &OVERLAPS[k];
-        if (face_at(&t, o->x, o->y) != o->front)
+        if (target_face_at(&t, o->x, o->y) != o->front)
             fail_msg("pixel (%d,%d): face %d should be in front, the z-buffer shows face %d",
-                     o->x, o->y, o->front, face_at(&t, o->x, o->y));
+                     o->x, o->y, o->front, target_face_at(&t, o->x, o->y));
         char what[64];
         snprintf(what, sizeof what, "depth at pixel (%d,%d)", o->x, o->y);
-        expect_relative(stored_at(&t, o->x, o->y), ray_plane_depth(o->x, o->y, o->a, o->b, o->c),
-                        1e-5, what);
+        expect_relative(target_depth_at(&t, o->x, o->y),
+                        ray_plane_depth(o->x, o->y, o->a, o->b, o->c), 1e-5, what);
     }
     target_free(&t);
     render_free(&r);
@@ -208,10 +199,11 @@ static void huge_triangle_keeps_each_rules_depth_through_the_guard_band(void **s
             double wc = 1 - wa - wb;
             char what[96];
             snprintf(what, sizeof what, "perspective depth at (%d,%d) after the guard band", x, y);
-            expect_relative(stored_at(&right, x, y), 1 / (wa / a.d + wb / b.d + wc / c.d), 1e-6,
-                            what);
+            expect_relative(target_depth_at(&right, x, y), 1 / (wa / a.d + wb / b.d + wc / c.d),
+                            1e-6, what);
             snprintf(what, sizeof what, "naive depth at (%d,%d) after the guard band", x, y);
-            expect_relative(stored_at(&naive, x, y), wa * a.d + wb * b.d + wc * c.d, 1e-6, what);
+            expect_relative(target_depth_at(&naive, x, y), wa * a.d + wb * b.d + wc * c.d, 1e-6,
+                            what);
         }
     target_free(&right);
     target_free(&naive);
@@ -226,8 +218,8 @@ static void fragments_beyond_far_are_discarded_untested(void **state)
     ScreenFace f = screen_triangle(v, 0);
     DrawContext ctx = {0.1, 50};
     draw_face(&t, &f, &ctx);
-    assert_int_equal(t.stats.tested, 0);
-    assert_int_equal(face_at(&t, 3, 3), NO_FACE);
+    expect_count(0, t.stats.tested, "fragments tested");
+    expect_target_face(&t, 3, 3, NO_FACE, "");
     target_free(&t);
 }
 
@@ -256,12 +248,12 @@ static void negated_w_lets_the_far_square_cover_the_near_one(void **state)
         Target right = new_target(32, 32, &ZBUFFER), bug = new_target(32, 32, &NEGATED_W_BUG);
         draw_two_squares(&right, &ZBUFFER, order);
         draw_two_squares(&bug, &NEGATED_W_BUG, order);
-        assert_int_equal(face_at(&right, 16, 16), 0);
-        assert_true(stored_at(&right, 16, 16) == 2);
-        if (face_at(&bug, 16, 16) != 1)
+        expect_target_face(&right, 16, 16, 0, "");
+        assert_true(target_depth_at(&right, 16, 16) == 2);
+        if (target_face_at(&bug, 16, 16) != 1)
             fail_msg("draw order %d: with -d stored the far square should cover the near one "
-                     "at (16,16), face %d is there", order, face_at(&bug, 16, 16));
-        assert_true(stored_at(&bug, 16, 16) == -8);
+                     "at (16,16), face %d is there", order, target_face_at(&bug, 16, 16));
+        assert_true(target_depth_at(&bug, 16, 16) == -8);
         float *d = render_view_depth(&bug, &NEGATED_W_BUG);
         assert_non_null(d);
         assert_true(d[16 * 32 + 16] == 8);

@@ -87,26 +87,12 @@ static bool tested_pixel(int x, int y, bool *above)
     return true;
 }
 
-/* Runs the lesson with args, expecting success, and returns its stdout. */
-static char *run_ok(const char *const *args)
+/* A picture of grazing at the default size, 800 x 600, read back. */
+static Image read_grazing_png(const char *path)
 {
-    RunResult r = run_program(PROGRAM, args);
-    if (r.status != 0)
-        fail_msg("%s exited with %d: %s", PROGRAM, r.status, r.err);
-    char *out = r.out;
-    r.out = NULL;
-    run_result_free(&r);
-    return out;
-}
-
-static Image read_png(const char *path)
-{
-    Image im;
-    Error err;
-    if (!image_read_png(&im, path, &err))
-        fail_msg("reading %s: %s", path, err.msg);
-    assert_int_equal(im.width, 800);
-    assert_int_equal(im.height, 600);
+    Image im = read_png(path);
+    expect_count(800, im.width, "picture width");
+    expect_count(600, im.height, "picture height");
     return im;
 }
 
@@ -116,13 +102,8 @@ static Image render_id(const char *name, const char *flag, const char *value)
     char out[4096];
     snprintf(out, sizeof out, "%s", path_join(test_dir(name), "id.png"));
     const char *args[] = {"--scene", "grazing", "--shade", "id", "--out", out, flag, value, NULL};
-    free(run_ok(args));
-    return read_png(out);
-}
-
-static int32_t face_at(const Image *im, int x, int y)
-{
-    return id_colour_face(image_get(im, x, y));
+    free(run_ok(PROGRAM, args));
+    return read_grazing_png(out);
 }
 
 /* The test's own count of its pixels, so that a change of scene shows here
@@ -141,10 +122,10 @@ static void tested_pixels_are_as_derived(void **state)
             double py = y + 0.5;
             wrong += py > naive_line_row() && py < line_row();
         }
-    assert_int_equal(above, TESTED_ABOVE);
-    assert_int_equal(below, TESTED_BELOW);
-    assert_int_equal(above + below, TESTED_PIXELS);
-    assert_int_equal(wrong, NAIVE_WRONG);
+    expect_count(TESTED_ABOVE, above, "tested pixels above the line");
+    expect_count(TESTED_BELOW, below, "tested pixels below the line");
+    expect_count(TESTED_PIXELS, above + below, "tested pixels");
+    expect_count(NAIVE_WRONG, wrong, "tested pixels between the two lines");
 }
 
 /* Perspective (the default): every tested pixel shows the strip in front of
@@ -192,7 +173,7 @@ static void naive_rule_puts_the_seam_55_rows_too_high(void **state)
         }
     printf("  the naive rule shows the wrong strip at %ld of the %d tested pixels\n", wrong,
            TESTED_PIXELS);
-    assert_int_equal(wrong, NAIVE_WRONG);
+    expect_count(NAIVE_WRONG, wrong, "pixels the naive rule gets wrong");
     image_free(&im);
 }
 
@@ -207,8 +188,8 @@ static void compare_naive_marks_the_pixels_the_naive_rule_gets_wrong(void **stat
     snprintf(out, sizeof out, "%s", path_join(dir, "right.png"));
     snprintf(cmp, sizeof cmp, "%s", path_join(dir, "sub/compare.png"));
     const char *args[] = {"--out", out, "--compare-naive", cmp, NULL};
-    char *summary = run_ok(args);
-    Image im = read_png(cmp);
+    char *summary = run_ok(PROGRAM, args);
+    Image im = read_grazing_png(cmp);
     long marked = 0;
     for (int y = 0; y < 600; y++)
         for (int x = 0; x < 800; x++) {
@@ -228,7 +209,7 @@ static void compare_naive_marks_the_pixels_the_naive_rule_gets_wrong(void **stat
     snprintf(line, sizeof line, "  the naive rule shows another face at %ld pixels\n", marked);
     if (!strstr(summary, line))
         fail_msg("the summary should say\n%sit says\n%s", line, summary);
-    assert_true(marked >= NAIVE_WRONG);
+    expect_at_least(NAIVE_WRONG, marked, "marked pixels");
     free(summary);
     image_free(&im);
 }
@@ -266,14 +247,14 @@ static void depth_out_is_where_the_ray_meets_the_plane(void **state)
     snprintf(pfm, sizeof pfm, "%s", path_join(dir, "depth.pfm"));
     snprintf(png, sizeof png, "%s", path_join(dir, "pic.png"));
     const char *args[] = {"--fovy", "90", "--depth-out", pfm, "--out", png, NULL};
-    free(run_ok(args));
+    free(run_ok(PROGRAM, args));
     float *depth;
     int w, h;
     Error err;
     if (!read_pfm(&depth, &w, &h, pfm, &err))
         fail_msg("%s", err.msg);
-    assert_int_equal(w, 800);
-    assert_int_equal(h, 600);
+    expect_count(800, w, "depth picture width");
+    expect_count(600, h, "depth picture height");
     /* Pixels on A above the line, on B below it (inside B's outline: B's
      * half-width there is 225 / d), and on A beside and in front of B. */
     const struct { int x, y; char strip; } at[7] = {

@@ -19,42 +19,7 @@
 
 #define PROGRAM "04_scanline_inverse_z"
 #define GROUP "04_scanline_inverse_z"
-#define PATH_MAX_LEN 512
 #define TEXT_MAX 4096
-
-typedef struct {
-    char path[PATH_MAX_LEN];
-} Path;
-
-static Path in_dir(const char *dir, const char *file)
-{
-    Path p;
-    snprintf(p.path, sizeof p.path, "%s", path_join(dir, file));
-    return p;
-}
-
-static Image read_png(const char *path)
-{
-    Image im;
-    Error err;
-    if (!image_read_png(&im, path, &err))
-        fail_msg("cannot read the lesson's output: %s", err.msg);
-    return im;
-}
-
-static void write_text(const char *path, const char *text)
-{
-    FILE *fp = fopen(path, "w");
-    assert_non_null(fp);
-    fputs(text, fp);
-    assert_int_equal(fclose(fp), 0);
-}
-
-static void expect_line(const char *out, const char *line)
-{
-    if (!strstr(out, line))
-        fail_msg("the summary lacks the line\n%s\nit was:\n%s", line, out);
-}
 
 /* ---- the default run ------------------------------------------------------ */
 
@@ -70,14 +35,14 @@ static void default_run_draws_the_walls_and_finds_the_front_object(void **state)
     const char *args[] = {NULL};
     RunResult r = run_program(PROGRAM, args);
     assert_string_equal(r.err, "");
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     expect_line(r.out, "04_scanline_inverse_z: scene walls (98 faces): ");
     expect_line(r.out, "  wrote out/04_scanline_inverse_z.png\n");
     expect_line(r.out, "  front object: face 97 at d = 42.002 at the screen centre (400,300)\n");
     run_result_free(&r);
     Image im = read_png("out/04_scanline_inverse_z.png");
-    assert_int_equal(im.width, 800);
-    assert_int_equal(im.height, 600);
+    expect_count(800, im.width, "picture width");
+    expect_count(600, im.height, "picture height");
     expect_image(&im, GROUP, "default_render");
     image_free(&im);
 }
@@ -139,7 +104,7 @@ static void depth_out_writes_view_depth_not_its_inverse(void **state)
          pfm = in_dir(dir, "square.pfm");
     write_text(obj.path, SQUARE_OBJ);
     RunResult r = render_square(obj.path, out.path, pfm.path);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     expect_line(r.out, "  fragments: 400 tested, 400 passed, 0 failed; ");
     expect_line(r.out, "  front object: face 0 at d = 5.000 at the screen centre (50,50)\n");
     run_result_free(&r);
@@ -149,8 +114,8 @@ static void depth_out_writes_view_depth_not_its_inverse(void **state)
     Error err;
     if (!read_pfm(&d, &w, &h, pfm.path, &err))
         fail_msg("%s", err.msg);
-    assert_int_equal(w, 100);
-    assert_int_equal(h, 100);
+    expect_count(100, w, "depth picture width");
+    expect_count(100, h, "depth picture height");
     for (int y = 0; y < 100; y++)
         for (int x = 0; x < 100; x++) {
             float v = d[y * 100 + x];
@@ -171,7 +136,7 @@ static void nothing_at_the_centre_is_reported(void **state)
     Path obj = in_dir(dir, "far.obj"), out = in_dir(dir, "far.png");
     write_text(obj.path, FAR_SQUARE_OBJ);
     RunResult r = render_square(obj.path, out.path, NULL);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     expect_line(r.out, "  fragments: 0 tested, 0 passed, 0 failed; no pixel covered\n");
     expect_line(r.out, "  front object: nothing at the screen centre (50,50)\n");
     run_result_free(&r);
@@ -215,7 +180,7 @@ static void ascii_and_trace_speak_of_inverse_depth(void **state)
     const char *extra[] = {"--ascii", "--trace", "4,1", NULL};
     RunResult r = render_two_buffers(test_dir("l04_two_buffers_text"), extra);
     assert_string_equal(r.err, "");
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     expect_line(r.out, "  fragments: 36 tested, 24 passed, 12 failed; ");
     expect_line(r.out, "trace pixel (4,1): 2 fragments\n");
     expect_line(r.out, "  1. face 0   1/d=0.2          stored=0            passed\n");
@@ -234,7 +199,7 @@ static void steps_write_a_frame_per_face(void **state)
     Path steps = in_dir(dir, "steps");
     const char *extra[] = {"--steps", steps.path, NULL};
     RunResult r = render_two_buffers(dir, extra);
-    assert_int_equal(r.status, 0);
+    expect_count(0, r.status, "exit status");
     run_result_free(&r);
     const char *frames[] = {"step_0000.png", "step_0001.png", "step_0002.png",
                             "step_0002_depth.png"};
@@ -246,37 +211,23 @@ static void steps_write_a_frame_per_face(void **state)
 
 /* ---- bad input ------------------------------------------------------------- */
 
-static void expect_refused(const char *const *args, int status, const char *message,
-                           const char *no_file)
-{
-    RunResult r = run_program(PROGRAM, args);
-    char want[TEXT_MAX];
-    snprintf(want, sizeof want, PROGRAM ": error: %s\n", message);
-    assert_string_equal(r.err, want);
-    assert_int_equal(r.status, status);
-    assert_string_equal(r.out, "");
-    if (file_exists(no_file))
-        fail_msg("%s was written by a run that failed", no_file);
-    run_result_free(&r);
-}
-
 static void bad_command_lines_are_refused_with_status_2(void **state)
 {
     (void)state;
     const char *dir = test_dir("l04_refused");
     Path out = in_dir(dir, "never.png");
     const char *unknown[] = {"--out", out.path, "--bogus", NULL};
-    expect_refused(unknown, 2, "unknown flag '--bogus' (try --help)", out.path);
+    expect_run_refused(PROGRAM, unknown, 2, "unknown flag '--bogus' (try --help)", out.path);
     const char *scene[] = {"--out", out.path, "--scene", "nope", NULL};
-    expect_refused(scene, 2,
-                   "--scene: no scene named 'nope' (known: triangles3, interpenetrate, cubes, "
-                   "grazing, walls, knot)",
-                   out.path);
+    expect_run_refused(PROGRAM, scene, 2,
+                       "--scene: no scene named 'nope' (known: triangles3, interpenetrate, cubes, "
+                       "grazing, walls, knot)",
+                       out.path);
     const char *width[] = {"--out", out.path, "--width", "0", NULL};
-    expect_refused(width, 2, "--width: 0 is out of range (1 to 16384)", out.path);
+    expect_run_refused(PROGRAM, width, 2, "--width: 0 is out of range (1 to 16384)", out.path);
     /* The naive comparison is lesson 03's extra (its extras/): not carried here. */
     const char *interp[] = {"--out", out.path, "--depth-interp", "naive", NULL};
-    expect_refused(interp, 2, "unknown flag '--depth-interp' (try --help)", out.path);
+    expect_run_refused(PROGRAM, interp, 2, "unknown flag '--depth-interp' (try --help)", out.path);
 }
 
 static void missing_obj_fails_with_status_1(void **state)
@@ -287,7 +238,7 @@ static void missing_obj_fails_with_status_1(void **state)
     const char *args[] = {"--out", out.path, "--obj", obj.path, NULL};
     char message[TEXT_MAX];
     snprintf(message, sizeof message, "cannot read %s: No such file or directory", obj.path);
-    expect_refused(args, 1, message, out.path);
+    expect_run_refused(PROGRAM, args, 1, message, out.path);
 }
 
 int main(void)

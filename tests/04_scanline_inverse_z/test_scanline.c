@@ -111,8 +111,8 @@ static void triangle_at_depth_5_in_front_of_nothing(void **state)
     draw_flat(&t, TRIANGLE_AT_5, 3, 5.0, 0);
     const char *map[] = {"   55   ", "  5555  ", " 555555 "};
     expect_map(&t, true, map, "De Goes' first z-buffer");
-    assert_int_equal(t.stats.tested, 2 + 4 + 6);
-    assert_int_equal(t.stats.passed, 12);
+    expect_count(2 + 4 + 6, t.stats.tested, "fragments tested");
+    expect_count(12, t.stats.passed, "fragments passed");
     target_free(&t);
 }
 
@@ -125,9 +125,9 @@ static void screen_polygon_at_depth_6_shows_only_around_the_triangle(void **stat
     const char *map[] = {"66655666", "66555566", "65555556"};
     expect_map(&t, true, map, "De Goes' second z-buffer");
     /* 24 fragments of the depth-6 polygon: 12 land on cleared pixels, 12 lose to the 5s. */
-    assert_int_equal(t.stats.tested, 12 + 24);
-    assert_int_equal(t.stats.passed, 12 + 12);
-    assert_int_equal(t.stats.failed, 12);
+    expect_count(12 + 24, t.stats.tested, "fragments tested");
+    expect_count(12 + 12, t.stats.passed, "fragments passed");
+    expect_count(12, t.stats.failed, "fragments failed");
     target_free(&t);
 }
 
@@ -141,8 +141,8 @@ static void two_buffers_do_not_depend_on_drawing_order(void **state)
     draw_flat(&t, TRIANGLE_AT_5, 3, 5.0, 0);
     const char *map[] = {"66655666", "66555566", "65555556"};
     expect_map(&t, true, map, "screen polygon first, then the triangle");
-    assert_int_equal(t.stats.passed, 24 + 12);
-    assert_int_equal(t.stats.failed, 0);
+    expect_count(24 + 12, t.stats.passed, "fragments passed");
+    expect_count(0, t.stats.failed, "fragments failed");
     target_free(&t);
 }
 
@@ -159,7 +159,7 @@ static void clear_to_zero_means_nothing_drawn(void **state)
     clear_depth(&t);
     for (size_t i = 0; i < 20; i++) {
         assert_true(t.depth[i] == 0.0f);
-        assert_int_equal(t.face[i], NO_FACE);
+        expect_count(NO_FACE, t.face[i], "face after the clear");
     }
     target_free(&t);
 }
@@ -171,7 +171,7 @@ static void clear_to_zero_loses_to_a_far_surface(void **state)
     (void)state;
     Target t = make_target(1, 1);
     assert_true(depth_test(&t, 0, 3, (float)(1.0 / 900.0)));
-    assert_int_equal(t.face[0], 3);
+    expect_target_face(&t, 0, 0, 3, "");
     target_free(&t);
 }
 
@@ -185,12 +185,12 @@ static void larger_inverse_depth_wins(void **state)
     assert_true(depth_test(&t, 0, 2, (float)(1.0 / 2.0)));  /* near wins over it */
     assert_true(depth_test(&t, 1, 2, (float)(1.0 / 2.0)));  /* near first */
     assert_false(depth_test(&t, 1, 1, (float)(1.0 / 4.0))); /* far loses */
-    assert_int_equal(t.face[0], 2);
-    assert_int_equal(t.face[1], 2);
+    expect_target_face(&t, 0, 0, 2, "near drawn second");
+    expect_target_face(&t, 1, 0, 2, "near drawn first");
     assert_true(t.depth[0] == 0.5f && t.depth[1] == 0.5f);
-    assert_int_equal(t.stats.tested, 4);
-    assert_int_equal(t.stats.failed, 1);
-    assert_int_equal(t.overdraw[0], 2);
+    expect_count(4, t.stats.tested, "fragments tested");
+    expect_count(1, t.stats.failed, "fragments failed");
+    expect_count(2, t.overdraw[0], "fragments tested at pixel (0, 0)");
     target_free(&t);
 }
 
@@ -201,8 +201,8 @@ static void equal_depth_keeps_the_first_fragment(void **state)
     draw_flat(&t, SCREEN_POLYGON, 4, 6.0, 1);
     draw_flat(&t, SCREEN_POLYGON, 4, 6.0, 2);
     for (size_t i = 0; i < 24; i++)
-        assert_int_equal(t.face[i], 1);
-    assert_int_equal(t.stats.failed, 24);
+        expect_count(1, t.face[i], "face (the tie keeps the first)");
+    expect_count(24, t.stats.failed, "fragments failed");
     target_free(&t);
 }
 
@@ -213,10 +213,10 @@ static void far_plane_discards_before_the_test(void **state)
     (void)state;
     Target t = make_target(8, 3);
     draw_flat(&t, SCREEN_POLYGON, 4, 1001.0, 1);
-    assert_int_equal(t.stats.tested, 0);
+    expect_count(0, t.stats.tested, "fragments tested");
     draw_flat(&t, SCREEN_POLYGON, 4, 1000.0, 2);
-    assert_int_equal(t.stats.tested, 24);
-    assert_int_equal(t.face[0], 2);
+    expect_count(24, t.stats.tested, "fragments tested");
+    expect_target_face(&t, 0, 0, 2, "");
     target_free(&t);
 }
 
@@ -243,7 +243,7 @@ static void expect_polygon_map(const double (*xy)[2], int n, int width, int heig
             snprintf(label, sizeof label, "%s (%s winding, starting at corner %d)", what,
                      reversed ? "reversed" : "given", start);
             expect_map(&t, false, rows, label);
-            assert_int_equal(t.stats.tested, pixels);
+            expect_count(pixels, t.stats.tested, "fragments tested");
             target_free(&t);
         }
     }
@@ -350,7 +350,7 @@ static void zero_height_polygon_draws_nothing(void **state)
     const double on_centre[4][2] = {{0, 2.5}, {3, 2.5}, {8, 2.5}, {5, 2.5}};
     draw_flat(&t, flat, 3, 2.0, 0);
     draw_flat(&t, on_centre, 4, 2.0, 0);
-    assert_int_equal(t.stats.tested, 0);
+    expect_count(0, t.stats.tested, "fragments tested");
     target_free(&t);
 }
 
@@ -361,7 +361,7 @@ static void zero_width_polygon_draws_nothing(void **state)
     Target t = make_target(8, 8);
     const double sliver[3][2] = {{3.5, 0}, {3.5, 8}, {3.5, 4}};
     draw_flat(&t, sliver, 3, 2.0, 0);
-    assert_int_equal(t.stats.tested, 0);
+    expect_count(0, t.stats.tested, "fragments tested");
     target_free(&t);
 }
 
@@ -373,8 +373,8 @@ static void unit_square_covers_one_pixel(void **state)
     Target t = make_target(6, 6);
     const double quad[4][2] = {{2, 3}, {3, 3}, {3, 4}, {2, 4}};
     draw_flat(&t, quad, 4, 2.0, 0);
-    assert_int_equal(t.stats.tested, 1);
-    assert_int_equal(t.face[3 * 6 + 2], 0);
+    expect_count(1, t.stats.tested, "fragments tested");
+    expect_target_face(&t, 2, 3, 0, "");
     target_free(&t);
 }
 
@@ -389,10 +389,10 @@ static void tiny_triangles_cover_one_pixel_or_none(void **state)
     const double around[3][2] = {{2.4, 3.4}, {2.6, 3.4}, {2.5, 3.6}};
     const double beside[3][2] = {{2.7, 3.4}, {2.9, 3.4}, {2.8, 3.6}};
     draw_flat(&t, around, 3, 2.0, 0);
-    assert_int_equal(t.stats.tested, 1);
-    assert_int_equal(t.face[3 * 6 + 2], 0);
+    expect_count(1, t.stats.tested, "fragments tested");
+    expect_target_face(&t, 2, 3, 0, "");
     draw_flat(&t, beside, 3, 2.0, 1);
-    assert_int_equal(t.stats.tested, 1);
+    expect_count(1, t.stats.tested, "fragments tested");
     target_free(&t);
 }
 
@@ -406,7 +406,7 @@ static void non_convex_polygon_is_refused(void **state)
     ScreenVertex dart[4] = {sv(0, 0, 2), sv(4, 3, 2), sv(8, 0, 2), sv(4, 8, 2)};
     assert_false(draw_polygon(&t, bowtie, 4, 0, FAR));
     assert_false(draw_polygon(&t, dart, 4, 0, FAR));
-    assert_int_equal(t.stats.tested, 0);
+    expect_count(0, t.stats.tested, "fragments tested");
     target_free(&t);
 }
 
@@ -469,7 +469,7 @@ static void stepping_along_a_long_span_stays_accurate(void **state)
     Target t = make_target(w, 1);
     ScreenVertex quad[4] = {sv(0, 0, 1), sv(w, 0, 100), sv(w, 1, 100), sv(0, 1, 1)};
     assert_true(draw_polygon(&t, quad, 4, 0, FAR));
-    assert_int_equal(t.stats.tested, w);
+    expect_count(w, t.stats.tested, "fragments tested");
     int worst_x = -1;
     double worst = 0;
     for (int x = 0; x < w; x++) {
@@ -510,9 +510,9 @@ static void huge_triangle_covers_the_screen_once(void **state)
     ScreenFace f = face_of(v, 3, &tri, true);
     DrawContext ctx = {0.1, FAR};
     draw_face(&t, &f, &ctx);
-    assert_int_equal(t.stats.tested, 64);
+    expect_count(64, t.stats.tested, "fragments tested");
     for (int i = 0; i < 64; i++)
-        assert_int_equal(t.overdraw[i], 1);
+        expect_count(1, t.overdraw[i], "fragments tested per pixel");
     target_free(&t);
 }
 
@@ -527,7 +527,7 @@ static void tall_polygon_walks_only_screen_rows(void **state)
     ScreenFace f = face_of(v, 4, tris, true);
     DrawContext ctx = {0.1, FAR};
     draw_face(&t, &f, &ctx);
-    assert_int_equal(t.stats.tested, 16);
+    expect_count(16, t.stats.tested, "fragments tested");
     target_free(&t);
 }
 
@@ -550,7 +550,7 @@ static void broken_corners_draw_nothing(void **state)
         draw_face(&t, &f, &ctx);
         assert_false(draw_polygon(&t, broken[k], 3, 0, FAR));
     }
-    assert_int_equal(t.stats.tested, 0);
+    expect_count(0, t.stats.tested, "fragments tested");
     target_free(&t);
 }
 
@@ -582,7 +582,7 @@ static void non_convex_face_is_drawn_as_its_triangles(void **state)
     const char *map[] = {".......#", "......#.", ".#...##.", "..#.##..",
                          "..####..", "...##...", "...##...", "........"};
     expect_map(&t, false, map, "dart drawn as two triangles");
-    assert_int_equal(t.stats.tested, 16);
+    expect_count(16, t.stats.tested, "fragments tested");
     target_free(&t);
 }
 
@@ -597,7 +597,7 @@ static void face_not_convex_on_screen_falls_back_to_triangles(void **state)
     ScreenFace f = face_of(v, 4, tris, true);
     DrawContext ctx = {0.1, FAR};
     draw_face(&t, &f, &ctx);
-    assert_int_equal(t.stats.tested, 16);
+    expect_count(16, t.stats.tested, "fragments tested");
     target_free(&t);
 }
 
@@ -680,12 +680,12 @@ static void coverage_equals_the_edge_function_rule(void **state)
                     fail_msg("polygon %d (%d corners): pixel (%d, %d) is %s but the edge "
                              "functions say %s", k, n, x, y, drawn ? "drawn" : "not drawn",
                              expected ? "inside" : "outside");
-                assert_true(t.overdraw[y * width + x] <= 1);
+                expect_at_most(1, t.overdraw[y * width + x], "fragments tested per pixel");
             }
         target_free(&t);
         checked++;
     }
-    assert_true(checked > 300); /* most random polygons stay convex */
+    expect_at_least(301, checked, "convex polygons checked"); /* most stay convex */
 }
 
 int main(void)

@@ -38,31 +38,25 @@ static Image new_image(int width, int height)
     return im;
 }
 
-static void assert_rgb(Rgb c, int r, int g, int b)
-{
-    if (c.r != r || c.g != g || c.b != b)
-        fail_msg("colour (%d, %d, %d), expected (%d, %d, %d)", c.r, c.g, c.b, r, g, b);
-}
-
 /* ---- image_init ---- */
 
 static void image_init_accepts_sides_from_1_to_16384(void **state)
 {
     (void)state;
     Image im = new_image(1, 1);
-    assert_rgb(image_get(&im, 0, 0), 0, 0, 0); /* a new image is black */
+    expect_pixel(&im, 0, 0, (Rgb){0, 0, 0}, ""); /* a new image is black */
     image_free(&im);
     assert_null(im.rgb);
 
     im = new_image(16384, 1);
-    assert_int_equal(im.width, 16384);
-    assert_int_equal(im.height, 1);
+    expect_count(16384, im.width, "picture width");
+    expect_count(1, im.height, "picture height");
     image_set(&im, 16383, 0, (Rgb){1, 2, 3}); /* the last pixel is writable */
-    assert_rgb(image_get(&im, 16383, 0), 1, 2, 3);
+    expect_pixel(&im, 16383, 0, (Rgb){1, 2, 3}, "");
     image_free(&im);
 
     im = new_image(1, 16384);
-    assert_int_equal(im.height, 16384);
+    expect_count(16384, im.height, "picture height");
     image_free(&im);
 }
 
@@ -91,7 +85,7 @@ static void image_fill_sets_every_pixel(void **state)
     image_fill(&im, (Rgb){7, 8, 9});
     for (int y = 0; y < 2; y++)
         for (int x = 0; x < 3; x++)
-            assert_rgb(image_get(&im, x, y), 7, 8, 9);
+            expect_pixel(&im, x, y, (Rgb){7, 8, 9}, "");
     image_free(&im);
 }
 
@@ -122,8 +116,8 @@ static void png_round_trip_keeps_every_pixel(void **state)
     Image back;
     if (!image_read_png(&back, path, &err))
         fail_msg("%s", err.msg);
-    assert_int_equal(back.width, 3);
-    assert_int_equal(back.height, 2);
+    expect_count(3, back.width, "picture width");
+    expect_count(2, back.height, "picture height");
     assert_memory_equal(back.rgb, im.rgb, 3 * 2 * 3);
     image_free(&back);
     image_free(&im);
@@ -153,8 +147,8 @@ static void png_row_0_is_the_top_row_on_disk(void **state)
     int w, h, n;
     unsigned char *px = stbi_load(path, &w, &h, &n, 3);
     assert_non_null(px);
-    assert_int_equal(w, 3);
-    assert_int_equal(h, 2);
+    expect_count(3, w, "width read back");
+    expect_count(2, h, "height read back");
     const uint8_t first_row[9] = {255, 0, 0, 0, 255, 0, 0, 0, 255};
     assert_memory_equal(px, first_row, 9);
     const uint8_t second_row[9] = {1, 2, 3, 250, 128, 7, 255, 255, 255};
@@ -171,8 +165,8 @@ static void png_read_converts_grey_to_rgb(void **state)
     Image im;
     Error err;
     assert_true(image_read_png(&im, path, &err));
-    assert_rgb(image_get(&im, 0, 0), 0, 0, 0);
-    assert_rgb(image_get(&im, 1, 0), 200, 200, 200);
+    expect_pixel(&im, 0, 0, (Rgb){0, 0, 0}, "");
+    expect_pixel(&im, 1, 0, (Rgb){200, 200, 200}, "");
     image_free(&im);
 }
 
@@ -266,8 +260,8 @@ static void pfm_round_trip_keeps_values_and_infinity(void **state)
     int w, h;
     if (!read_pfm(&back, &w, &h, path, &err))
         fail_msg("%s", err.msg);
-    assert_int_equal(w, 2);
-    assert_int_equal(h, 3);
+    expect_count(2, w, "width read back");
+    expect_count(3, h, "height read back");
     assert_memory_equal(back, DEPTHS, sizeof DEPTHS); /* bit for bit, +inf too */
     free(back);
 }
@@ -293,8 +287,8 @@ static void pfm_read_positive_scale_is_big_endian(void **state)
     Error err;
     if (!read_pfm(&v, &w, &h, path, &err))
         fail_msg("%s", err.msg);
-    assert_int_equal(w, 1);
-    assert_int_equal(h, 2);
+    expect_count(1, w, "width read back");
+    expect_count(2, h, "height read back");
     assert_true(v[0] == 2.0f); /* top row */
     assert_true(v[1] == 1.5f); /* bottom row */
     free(v);
@@ -366,12 +360,12 @@ static void depth_to_grey_near_white_far_dark_background_blue(void **state)
     const float depth[5] = {2.0f, 4.0f, 2.5f, INFINITY, NAN};
     Image im = new_image(5, 1);
     depth_to_grey(depth, &im);
-    assert_rgb(image_get(&im, 0, 0), 255, 255, 255);
-    assert_rgb(image_get(&im, 1, 0), 48, 48, 48);
-    assert_rgb(image_get(&im, 2, 0), 203, 203, 203);
+    expect_pixel(&im, 0, 0, (Rgb){255, 255, 255}, "");
+    expect_pixel(&im, 1, 0, (Rgb){48, 48, 48}, "");
+    expect_pixel(&im, 2, 0, (Rgb){203, 203, 203}, "");
     Rgb bg = DEPTH_BACKGROUND;
-    assert_rgb(image_get(&im, 3, 0), bg.r, bg.g, bg.b);
-    assert_rgb(image_get(&im, 4, 0), bg.r, bg.g, bg.b);
+    expect_pixel(&im, 3, 0, bg, "");
+    expect_pixel(&im, 4, 0, bg, "");
     image_free(&im);
 }
 
@@ -381,10 +375,10 @@ static void depth_to_grey_single_depth_is_white(void **state)
     const float depth[3] = {5.0f, INFINITY, 5.0f}; /* no range: all nearest */
     Image im = new_image(3, 1);
     depth_to_grey(depth, &im);
-    assert_rgb(image_get(&im, 0, 0), 255, 255, 255);
-    assert_rgb(image_get(&im, 2, 0), 255, 255, 255);
+    expect_pixel(&im, 0, 0, (Rgb){255, 255, 255}, "");
+    expect_pixel(&im, 2, 0, (Rgb){255, 255, 255}, "");
     Rgb bg = DEPTH_BACKGROUND;
-    assert_rgb(image_get(&im, 1, 0), bg.r, bg.g, bg.b);
+    expect_pixel(&im, 1, 0, bg, "");
     image_free(&im);
 }
 
@@ -415,31 +409,31 @@ static void image_compare_counts_largest_difference_and_box(void **state)
     Image diff;
     Error err;
     assert_true(image_compare(&a, &b, 2, &d, &diff, &err));
-    assert_int_equal(d.differing, 2);
-    assert_int_equal(d.max_channel_diff, 10);
-    assert_int_equal(d.x0, 1);
-    assert_int_equal(d.y0, 0);
-    assert_int_equal(d.x1, 2);
-    assert_int_equal(d.y1, 2);
+    expect_count(2, d.differing, "differing pixels");
+    expect_count(10, d.max_channel_diff, "largest channel difference");
+    expect_count(1, d.x0, "x0 of the differing pixels");
+    expect_count(0, d.y0, "y0 of the differing pixels");
+    expect_count(2, d.x1, "x1 of the differing pixels");
+    expect_count(2, d.y1, "y1 of the differing pixels");
     /* Diff picture: differing pixels magenta, the rest b (not a) at a quarter,
      * rounded down: (100, 43, 8) / 4 -> (25, 10, 2); b's (100, 44, 8) at
      * (0, 1) -> (25, 11, 2), where a's would give (25, 10, 2). */
-    assert_int_equal(diff.width, 4);
-    assert_int_equal(diff.height, 3);
-    assert_rgb(image_get(&diff, 2, 0), 255, 0, 255);
-    assert_rgb(image_get(&diff, 1, 2), 255, 0, 255);
-    assert_rgb(image_get(&diff, 0, 1), 25, 11, 2);
-    assert_rgb(image_get(&diff, 3, 2), 25, 10, 2);
+    expect_count(4, diff.width, "picture width");
+    expect_count(3, diff.height, "picture height");
+    expect_pixel(&diff, 2, 0, (Rgb){255, 0, 255}, "");
+    expect_pixel(&diff, 1, 2, (Rgb){255, 0, 255}, "");
+    expect_pixel(&diff, 0, 1, (Rgb){25, 11, 2}, "");
+    expect_pixel(&diff, 3, 2, (Rgb){25, 10, 2}, "");
     image_free(&diff);
 
     /* Tolerance 0: all three differ; the box grows to x 0..2. */
     assert_true(image_compare(&a, &b, 0, &d, NULL, &err));
-    assert_int_equal(d.differing, 3);
-    assert_int_equal(d.max_channel_diff, 10);
-    assert_int_equal(d.x0, 0);
-    assert_int_equal(d.y0, 0);
-    assert_int_equal(d.x1, 2);
-    assert_int_equal(d.y1, 2);
+    expect_count(3, d.differing, "differing pixels");
+    expect_count(10, d.max_channel_diff, "largest channel difference");
+    expect_count(0, d.x0, "x0 of the differing pixels");
+    expect_count(0, d.y0, "y0 of the differing pixels");
+    expect_count(2, d.x1, "x1 of the differing pixels");
+    expect_count(2, d.y1, "y1 of the differing pixels");
     image_free(&a);
     image_free(&b);
 }
@@ -451,12 +445,12 @@ static void image_compare_of_equal_images_has_no_box(void **state)
     ImageDiff d;
     Error err;
     assert_true(image_compare(&a, &b, 0, &d, NULL, &err));
-    assert_int_equal(d.differing, 0);
-    assert_int_equal(d.max_channel_diff, 0);
-    assert_int_equal(d.x0, -1);
-    assert_int_equal(d.y0, -1);
-    assert_int_equal(d.x1, -1);
-    assert_int_equal(d.y1, -1);
+    expect_count(0, d.differing, "differing pixels");
+    expect_count(0, d.max_channel_diff, "largest channel difference");
+    expect_count(-1, d.x0, "x0 of the differing pixels");
+    expect_count(-1, d.y0, "y0 of the differing pixels");
+    expect_count(-1, d.x1, "x1 of the differing pixels");
+    expect_count(-1, d.y1, "y1 of the differing pixels");
     image_free(&a);
     image_free(&b);
 }

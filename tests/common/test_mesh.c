@@ -50,15 +50,6 @@ static void parse_fails(const char *text, const char *expected)
     parse_fails_len(text, strlen(text), expected);
 }
 
-static void write_text(const char *path, const char *text)
-{
-    FILE *fp = fopen(path, "wb");
-    if (!fp)
-        fail_msg("cannot create %s", path);
-    fputs(text, fp);
-    assert_int_equal(fclose(fp), 0);
-}
-
 static void assert_corners(const Mesh *m, int face, const int *expected, int n)
 {
     const Face *f = &m->faces[face];

@@ -25,15 +25,6 @@
 /* A reader stuck on a pipe would hang the test run: this alarm ends it. */
 #define HANG_LIMIT_SECONDS 20
 
-static void write_text(const char *path, const char *text)
-{
-    FILE *fp = fopen(path, "wb");
-    if (!fp)
-        fail_msg("cannot create %s", path);
-    fputs(text, fp);
-    assert_int_equal(fclose(fp), 0);
-}
-
 static void expect_parse_error(const char *text, size_t len, const char *expected)
 {
     Mesh m;

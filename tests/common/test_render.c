@@ -27,7 +27,7 @@ static void polygon_inside_the_band_is_copied(void **state)
 {
     (void)state;
     ScreenVertex in[3] = {{-5, 3, 1}, {900, 20, 2}, {40, -1000, 3}}, out[GUARD_BAND_MAX_OUT(3)];
-    assert_int_equal(guard_band_clip(in, 3, 800, 600, LINEAR_D, out), 3);
+    expect_count(3, guard_band_clip(in, 3, 800, 600, LINEAR_D, out), "corners after clipping");
     assert_memory_equal(in, out, sizeof in);
 }
 
@@ -36,8 +36,8 @@ static void polygon_beyond_the_band_is_dropped(void **state)
     (void)state;
     ScreenVertex in[3] = {{-3 * G, 0, 1}, {-2 * G, 0, 1}, {-2 * G, 50, 1}};
     ScreenVertex out[GUARD_BAND_MAX_OUT(3)];
-    assert_int_equal(guard_band_clip(in, 3, 800, 600, LINEAR_D, out), 0);
-    assert_int_equal(guard_band_clip(in, 2, 800, 600, LINEAR_D, out), 0); /* n < 3 */
+    expect_count(0, guard_band_clip(in, 3, 800, 600, LINEAR_D, out), "corners after clipping");
+    expect_count(0, guard_band_clip(in, 2, 800, 600, LINEAR_D, out), "corners, n < 3");
 }
 
 /* Corner 0 at x = -3G, the others at x = +G: both edges from corner 0 cross
@@ -52,7 +52,7 @@ static void clip_puts_new_corners_on_the_band_with_the_lessons_depth(void **stat
     for (int m = 0; m < 2; m++) {
         ScreenVertex out[GUARD_BAND_MAX_OUT(3)];
         int n = guard_band_clip(in, 3, 800, 600, modes[m], out);
-        assert_int_equal(n, 4);
+        expect_count(4, n, "corners after clipping");
         int on_band = 0;
         for (int k = 0; k < n; k++) {
             assert_true(guard_band_contains(&out[k], 1, 800, 600));
@@ -62,7 +62,7 @@ static void clip_puts_new_corners_on_the_band_with_the_lessons_depth(void **stat
                 assert_true(fabs(out[k].d - want_d[m]) < 1e-12);
             }
         }
-        assert_int_equal(on_band, 2);
+        expect_count(2, on_band, "corners on the guard band");
     }
 }
 
@@ -86,16 +86,16 @@ static void id_colours_are_face_plus_one_big_endian(void **state)
 {
     (void)state;
     Rgb c = face_id_colour(0);
-    assert_true(c.r == 0 && c.g == 0 && c.b == 1);
+    expect_colour((Rgb){0, 0, 1}, c, "id colour");
     c = face_id_colour(255); /* 256 = 0x000100 */
-    assert_true(c.r == 0 && c.g == 1 && c.b == 0);
+    expect_colour((Rgb){0, 1, 0}, c, "id colour");
     c = face_id_colour(65535); /* 65536 = 0x010000 */
-    assert_true(c.r == 1 && c.g == 0 && c.b == 0);
+    expect_colour((Rgb){1, 0, 0}, c, "id colour");
     c = face_id_colour(0x123455); /* 0x123456 */
-    assert_true(c.r == 0x12 && c.g == 0x34 && c.b == 0x56);
-    assert_int_equal(id_colour_face(c), 0x123455);
+    expect_colour((Rgb){0x12, 0x34, 0x56}, c, "id colour");
+    expect_count(0x123455, id_colour_face(c), "face of the id colour");
     Rgb black = {0, 0, 0};
-    assert_int_equal(id_colour_face(black), NO_FACE);
+    expect_count(NO_FACE, id_colour_face(black), "face of black");
 }
 
 /* A unit square in the plane z = -5, facing the camera at the origin. */
@@ -132,12 +132,12 @@ static void flat_colour_is_kd_times_lambert(void **state)
     assert_true(white >= 0 && orange >= 0);
     m.faces[0].material = orange;
     Rgb base = face_base_colour(&m, 0);
-    assert_true(base.r == 255 && base.g == 128 && base.b == 0);
+    expect_colour((Rgb){255, 128, 0}, base, "base colour");
 
     m.faces[0].material = white;
     Camera cam = origin_camera(8, 8);
     Rgb c = face_flat_colour(&m, &cam, 0);
-    assert_true(c.r == 219 && c.g == 219 && c.b == 219);
+    expect_colour((Rgb){219, 219, 219}, c, "flat colour");
     mesh_free(&m);
 }
 
@@ -230,12 +230,12 @@ static void faces_reach_the_rasterizer_in_the_given_order(void **state)
     hook_calls = 0;
     const int order[4] = {0, 2, 1, 0};
     assert_true(render_faces(&r, &t, &RECORDER, order, 4, count_hook, NULL, &err));
-    assert_int_equal(drawn_count, 2); /* faces 1 and 2 dropped */
+    expect_count(2, drawn_count, "faces drawn"); /* faces 1 and 2 dropped */
     assert_int_equal(drawn_order[0], 0);
     assert_int_equal(drawn_order[1], 0);
-    assert_int_equal(hook_calls, 2);
-    assert_int_equal(r.counts.faces_drawn, 2);
-    assert_int_equal(r.counts.faces_behind_near, 2);
+    expect_count(2, hook_calls, "hook calls");
+    expect_count(2, r.counts.faces_drawn, "faces drawn");
+    expect_count(2, r.counts.faces_behind_near, "faces behind the near plane");
     assert_true(render_face_dropped(&r, 1) && render_face_dropped(&r, 2));
     assert_false(render_face_dropped(&r, 0));
     target_free(&t);
@@ -317,8 +317,8 @@ static void outputs_are_written_into_new_directories(void **state)
         fail_msg("render_write: %s", err.msg);
     Image im;
     assert_true(image_read_png(&im, png, &err));
-    assert_int_equal(id_colour_face(image_get(&im, 4, 4)), 0);
-    assert_int_equal(id_colour_face(image_get(&im, 0, 0)), NO_FACE);
+    expect_face_at(&im, 4, 4, 0, "");
+    expect_face_at(&im, 0, 0, NO_FACE, "");
     image_free(&im);
     assert_true(file_exists(pfm) && file_exists(pgm));
 

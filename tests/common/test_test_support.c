@@ -1,7 +1,9 @@
 /* test_test_support.c: the test helpers themselves (tests/support/).
  *
  * run_program is checked with the POSIX shell, /bin/sh, standing in for a
- * lesson: BIN_DIR and TOOL_DIR are pointed at /bin for those tests only. */
+ * lesson: BIN_DIR and TOOL_DIR are pointed at /bin for those tests only.
+ * The checks of expect.h are tested by their words, and once by a failing
+ * check run in a child process. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -13,9 +15,12 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "image.h"
+#include "shade.h"
+#include "target.h"
 #include "test_support.h"
 
 /* Saves an environment variable and restores it afterwards. */
@@ -185,6 +190,124 @@ static void expect_image_update_then_match(void **state)
     image_free(&im);
 }
 
+/* ---- the words of a failed check (expect.h) ---- */
+
+/* msg holds want, or the test fails showing both. */
+static void expect_words(const char *msg, const char *want)
+{
+    if (strcmp(msg, want) != 0)
+        fail_msg("the message is\n  %s\nexpected\n  %s", msg, want);
+}
+
+static void count_checks_say_expected_and_got_in_decimal(void **state)
+{
+    (void)state;
+    char msg[256] = "";
+    assert_true(count_message(msg, sizeof msg, 9226, 9226, "covered pixels"));
+    assert_false(count_message(msg, sizeof msg, 9226, 9230, "covered pixels"));
+    expect_words(msg, "covered pixels: expected 9226, got 9230");
+    assert_false(count_message(msg, sizeof msg, 67108864, 67174400, ""));
+    expect_words(msg, "expected 67108864, got 67174400"); /* not 0x4000000, 0x4010000 */
+    assert_true(at_least_message(msg, sizeof msg, 1, 1, "differing pixels"));
+    assert_false(at_least_message(msg, sizeof msg, 1, 0, "differing pixels"));
+    expect_words(msg, "differing pixels: expected at least 1, got 0");
+    assert_true(at_most_message(msg, sizeof msg, 9, 9, "wrong pixels"));
+    assert_false(at_most_message(msg, sizeof msg, 9, 12, "wrong pixels"));
+    expect_words(msg, "wrong pixels: expected at most 9, got 12");
+}
+
+static void colour_checks_say_both_colours_in_decimal(void **state)
+{
+    (void)state;
+    char msg[256] = "";
+    Rgb red = {255, 0, 0}, dark = {0, 0, 3};
+    assert_true(colour_message(msg, sizeof msg, red, red, "background"));
+    assert_false(colour_message(msg, sizeof msg, red, dark, "background"));
+    expect_words(msg, "background: expected rgb 255,0,0, got rgb 0,0,3");
+    assert_false(colour_that_message(msg, sizeof msg, dark, false, "pixel (3, 4)",
+                                     "a shade of red"));
+    expect_words(msg, "pixel (3, 4): expected a shade of red, got rgb 0,0,3");
+
+    Image im;
+    Error err;
+    assert_true(image_init(&im, 20, 50, &err));
+    image_set(&im, 12, 40, dark);
+    assert_true(pixel_message(msg, sizeof msg, &im, 12, 40, dark, "left wall"));
+    assert_false(pixel_message(msg, sizeof msg, &im, 12, 40, red, "left wall"));
+    expect_words(msg, "left wall: pixel (12, 40): expected rgb 255,0,0, got rgb 0,0,3");
+    assert_false(pixel_message(msg, sizeof msg, &im, 20, 0, red, ""));
+    expect_words(msg, "pixel (20, 0) is outside the 20 x 50 picture");
+    image_free(&im);
+}
+
+static void face_checks_name_the_faces_and_their_id_colours(void **state)
+{
+    (void)state;
+    char msg[256] = "";
+    Image im;
+    Error err;
+    assert_true(image_init(&im, 20, 50, &err));
+    image_set(&im, 12, 40, face_id_colour(2));
+    assert_int_equal(face_at(&im, 12, 40), 2);
+    assert_int_equal(face_at(&im, 0, 0), NO_FACE);
+    assert_true(face_message(msg, sizeof msg, &im, 12, 40, 2, ""));
+    assert_false(face_message(msg, sizeof msg, &im, 12, 40, 3, ""));
+    expect_words(msg, "pixel (12, 40): expected face 3 (rgb 0,0,4), got face 2 (rgb 0,0,3)");
+    assert_false(face_message(msg, sizeof msg, &im, 0, 0, 65535, "strip B"));
+    expect_words(msg, "strip B: pixel (0, 0): expected face 65535 (rgb 1,0,0), "
+                      "got no face (rgb 0,0,0)");
+    image_free(&im);
+
+    Target t;
+    assert_true(target_init(&t, 4, 4, 0.0f, &err));
+    t.face[1 * 4 + 3] = 7;
+    expect_count(7, target_face_at(&t, 3, 1), "face in the target");
+    assert_true(target_face_message(msg, sizeof msg, &t, 3, 1, 7, ""));
+    assert_false(target_face_message(msg, sizeof msg, &t, 3, 1, NO_FACE, "corner"));
+    expect_words(msg, "corner: pixel (3, 1): expected no face, got face 7");
+    assert_false(target_face_message(msg, sizeof msg, &t, 0, 0, 0, ""));
+    expect_words(msg, "pixel (0, 0): expected face 0, got no face");
+    target_free(&t);
+}
+
+/* In a child process, a cmocka test whose expect_count fails. */
+static void failing_count_check(void **state)
+{
+    (void)state;
+    expect_count(9226, 9230, "covered pixels");
+}
+
+static void a_failed_check_fails_the_test_and_prints_its_words(void **state)
+{
+    (void)state;
+    fflush(stdout);
+    fflush(stderr);
+    FILE *log = tmpfile();
+    assert_non_null(log);
+    pid_t pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        dup2(fileno(log), STDOUT_FILENO);
+        dup2(fileno(log), STDERR_FILENO);
+        cmocka_set_test_filter("failing_count_check"); /* whatever TEST_FILTER said */
+        const struct CMUnitTest child[] = {cmocka_unit_test(failing_count_check)};
+        _exit(cmocka_run_group_tests(child, NULL, NULL) == 1 ? 0 : 3);
+    }
+    int st;
+    assert_int_equal(waitpid(pid, &st, 0), pid);
+    char text[8192];
+    rewind(log);
+    size_t n = fread(text, 1, sizeof text - 1, log);
+    text[n] = '\0';
+    fclose(log);
+    if (!WIFEXITED(st) || WEXITSTATUS(st) != 0)
+        fail_msg("the failing check did not fail its test once; its run printed:\n%s", text);
+    if (!strstr(text, "covered pixels: expected 9226, got 9230"))
+        fail_msg("the failure lacks the words; it printed:\n%s", text);
+    if (!strstr(text, "test_test_support.c"))
+        fail_msg("the failure does not point at the test's file; it printed:\n%s", text);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -196,6 +319,10 @@ int main(void)
         cmocka_unit_test(run_program_captures_large_output_whole),
         cmocka_unit_test(run_tool_looks_in_tool_dir),
         cmocka_unit_test(expect_image_update_then_match),
+        cmocka_unit_test(count_checks_say_expected_and_got_in_decimal),
+        cmocka_unit_test(colour_checks_say_both_colours_in_decimal),
+        cmocka_unit_test(face_checks_name_the_faces_and_their_id_colours),
+        cmocka_unit_test(a_failed_check_fails_the_test_and_prints_its_words),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -24,6 +24,7 @@
 #include "file.h"
 
 #define PATH_BUF 4096
+#define TEXT_FILE_MAX (1 << 22) /* read_text: 4 MiB */
 #define PATH_SLOTS 8 /* path_join's rotating buffers: "valid for a few calls" */
 
 /* run_program: the time a lesson may take before it counts as hung. */
@@ -387,4 +388,99 @@ const char *test_dir(const char *name)
     if (!make_dirs(dir, &err))
         fail_msg("%s", err.msg);
     return dir;
+}
+
+/* ---- files ---- */
+
+Path in_dir(const char *dir, const char *file)
+{
+    Path p;
+    int len = snprintf(p.path, sizeof p.path, "%s", path_join(dir, file));
+    if (len < 0 || (size_t)len >= sizeof p.path)
+        fail_msg("path too long: %s/%s", dir, file);
+    return p;
+}
+
+void write_text(const char *path, const char *text)
+{
+    FILE *fp = fopen(path, "wb");
+    if (!fp)
+        fail_msg("cannot create %s: %s", path, strerror(errno));
+    bool written = fputs(text, fp) != EOF;
+    if (fclose(fp) != 0 || !written)
+        fail_msg("cannot write %s", path);
+}
+
+const char *write_text_in(const char *dir, const char *name, const char *text)
+{
+    const char *path = path_join(dir, name);
+    write_text(path, text);
+    return path;
+}
+
+char *read_text(const char *path)
+{
+    char *data = NULL;
+    size_t len = 0;
+    Error err;
+    if (!read_file(path, TEXT_FILE_MAX, &data, &len, &err))
+        fail_msg("%s", err.msg);
+    return data;
+}
+
+Image read_png(const char *path)
+{
+    Image im;
+    Error err;
+    if (!image_read_png(&im, path, &err))
+        fail_msg("cannot read %s: %s", path, err.msg);
+    return im;
+}
+
+/* ---- runs of a lesson ---- */
+
+char *run_ok(const char *program, const char *const *args)
+{
+    RunResult r = run_program(program, args);
+    if (r.status != 0)
+        fail_msg("%s exited with status %d, expected 0; stderr:\n%s", program, r.status, r.err);
+    char *out = r.out;
+    r.out = NULL;
+    run_result_free(&r);
+    return out;
+}
+
+void expect_run_error(const char *program, const char *const *args, int status,
+                      const char *stderr_text)
+{
+    RunResult r = run_program(program, args);
+    if (r.status != status || strcmp(r.err, stderr_text) != 0)
+        fail_msg("exit %d, stderr:\n%s\nexpected exit %d, stderr:\n%s", r.status, r.err,
+                 status, stderr_text);
+    run_result_free(&r);
+}
+
+void expect_run_refused(const char *program, const char *const *args, int status,
+                        const char *message, const char *no_file)
+{
+    RunResult r = run_program(program, args);
+    char want[PATH_BUF];
+    snprintf(want, sizeof want, "%s: error: %s\n", program, message);
+    assert_string_equal(r.err, want);
+    expect_count(status, r.status, "exit status");
+    assert_string_equal(r.out, "");
+    if (file_exists(no_file))
+        fail_msg("%s was written by a run that failed", no_file);
+    run_result_free(&r);
+}
+
+void expect_line(const char *out, const char *line)
+{
+    if (!strstr(out, line))
+        fail_msg("the summary lacks the line\n%s\nit was:\n%s", line, out);
+}
+
+int compare_strings(const void *a, const void *b)
+{
+    return strcmp((const char *)a, (const char *)b);
 }

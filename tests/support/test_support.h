@@ -16,12 +16,17 @@
  *   ($TOOL_DIR/<program>) with arguments, capturing stdout, stderr and the exit
  *   status, to test the command line end to end.
  *
- * test_dir: a fresh empty directory for one test's files, under $TEST_OUTPUT. */
+ * test_dir: a fresh empty directory for one test's files, under $TEST_OUTPUT.
+ *
+ * Checks that say what was expected and what came, in words and decimal
+ * (expect_count, expect_pixel, expect_face_at, ...): see expect.h, included
+ * here so that every test has them. */
 #ifndef TEST_SUPPORT_H
 #define TEST_SUPPORT_H
 
 #include <stdbool.h>
 
+#include "expect.h"
 #include "image.h"
 
 void expect_image_tolerant(const Image *actual, const char *group, const char *name,
@@ -49,5 +54,45 @@ const char *test_dir(const char *name);
 const char *path_join(const char *dir, const char *file);
 
 bool file_exists(const char *path);
+
+/* ---- files ---- */
+
+/* A path of its own (not path_join's rotating buffers), for a test that keeps
+ * several: Path out = in_dir(dir, "out.png"); then out.path. */
+#define TEST_PATH_MAX 512
+typedef struct {
+    char path[TEST_PATH_MAX];
+} Path;
+Path in_dir(const char *dir, const char *file);
+
+/* Writes text to path, replacing the file; fails the test when it cannot. */
+void write_text(const char *path, const char *text);
+/* write_text into dir/name; returns the path (path_join's buffer). */
+const char *write_text_in(const char *dir, const char *name, const char *text);
+/* The whole file as a NUL-terminated string to free(); fails the test when it
+ * cannot be read (or is larger than 4 MiB). */
+char *read_text(const char *path);
+/* Reads a PNG back (a lesson's output, say); fails the test, naming the file,
+ * when it cannot. The caller frees the image. */
+Image read_png(const char *path);
+
+/* ---- runs of a lesson ---- */
+
+/* run_program, requiring exit status 0 (else the test fails with the status and
+ * stderr); returns stdout, to free(). */
+char *run_ok(const char *program, const char *const *args);
+/* The run must fail with exactly this stderr (whole lines, newline included)
+ * and this exit status. */
+void expect_run_error(const char *program, const char *const *args, int status,
+                      const char *stderr_text);
+/* The run must fail with the one line "<program>: error: <message>" on
+ * stderr, this exit status, nothing on stdout and no file no_file. */
+void expect_run_refused(const char *program, const char *const *args, int status,
+                        const char *message, const char *no_file);
+/* out must hold line somewhere (a summary line, with its newline if given). */
+void expect_line(const char *out, const char *line);
+
+/* strcmp for qsort over an array of fixed-size char arrays. */
+int compare_strings(const void *a, const void *b);
 
 #endif

@@ -64,16 +64,6 @@ static const char *const TRIANGLE_AT_5_QUAD_AT_6 =
     "v -20 -20 -6\nv 20 -20 -6\nv 20 20 -6\nv -20 20 -6\n"
     "f 1 2 3\nf 4 5 6 7\n";
 
-static const char *write_text(const char *dir, const char *name, const char *text)
-{
-    const char *path = path_join(dir, name);
-    FILE *f = fopen(path, "w");
-    assert_non_null(f);
-    fputs(text, f);
-    fclose(f);
-    return path;
-}
-
 /* What follows the line starting with legend_start: the legend itself in
  * *legend, the rows as the return value. */
 static const char *ascii_part(const char *out, const char *legend_start, char *legend,
@@ -93,7 +83,7 @@ static void expect_text_map(const char *lesson, const char *obj_text, const char
                             const char *rows_want)
 {
     const char *dir = test_dir("tools_ascii");
-    const char *obj = write_text(dir, "map.obj", obj_text);
+    const char *obj = write_text_in(dir, "map.obj", obj_text);
     const char *args[] = {"--obj", obj, "--out", path_join(dir, "map.png"), "--width", "8",
                           "--height", "3", "--eye", "0,0,0", "--target", "0,0,-1", "--up",
                           "0,1,0", "--fovy", FOVY_TAN_06, "--near", "1", "--far", "100",
@@ -161,7 +151,7 @@ static void ybuffer_row_prints_y_itself_or_in_ten_steps_largest_nearest(void **s
         {"3 1 5 1 255 0 0\n", "y-buffer 10 columns, digit = y itself", "...111....\n"},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
-        const char *file = write_text(dir, "segments.txt", cases[k].segments);
+        const char *file = write_text_in(dir, "segments.txt", cases[k].segments);
         const char *args[] = {"--segments", file, "--out", path_join(dir, "row.png"), "--width",
                               "10", "--ascii", NULL};
         RunResult r = run_program("01_ybuffer", args);

@@ -21,15 +21,6 @@
 
 #define PROGRAM "02_zbuffer"
 
-static Image read_png(const char *path)
-{
-    Image im;
-    Error err;
-    if (!image_read_png(&im, path, &err))
-        fail_msg("%s", err.msg);
-    return im;
-}
-
 static void write_png(const Image *im, const char *path)
 {
     Error err;

@@ -25,7 +25,6 @@
 #include "test_support.h"
 
 #define SHELL_TIMEOUT 120 /* seconds: a build and a grade, with room to spare */
-#define MAX_FILE (1 << 22)
 
 static char tree[4096]; /* the made-up series, set up once: an absolute path */
 
@@ -97,23 +96,6 @@ static const char POINTS[] =
     "other_binary_passes      2     fake_add(): -1 + 1, in another test program\n";
 #define EXPECTED_SCORE 6.0
 #define EXPECTED_MAX 11.0
-
-static void write_text(const char *path, const char *text)
-{
-    FILE *fp = fopen(path, "w");
-    if (!fp || fputs(text, fp) == EOF || fclose(fp) != 0)
-        fail_msg("cannot write %s", path);
-}
-
-static char *read_text(const char *path)
-{
-    char *data;
-    size_t len;
-    Error err;
-    if (!read_file(path, MAX_FILE, &data, &len, &err))
-        fail_msg("%s", err.msg);
-    return data;
-}
 
 /* run_shell, and the command must succeed. */
 static ShellResult shell_ok(const char *dir, const char *fmt, ...)

@@ -35,7 +35,6 @@
 #include "test_support.h"
 
 #define SHELL_TIMEOUT 300 /* seconds for one build, test or grade */
-#define MAX_FILE (1 << 22)
 #define PATH_MAX_LEN 4096
 #define MAX_LESSONS 32
 #define MAX_LINES 4096
@@ -271,26 +270,6 @@ static const Mistake MISTAKES[] = {
 };
 
 /* ---- files ---- */
-
-static char *read_text(const char *path)
-{
-    char *data = NULL;
-    size_t len = 0;
-    Error err;
-    if (!read_file(path, MAX_FILE, &data, &len, &err))
-        fail_msg("%s", err.msg);
-    char *copy = strdup(data);
-    free(data);
-    assert_non_null(copy);
-    return copy;
-}
-
-static void write_text(const char *path, const char *text)
-{
-    FILE *fp = fopen(path, "w");
-    if (!fp || fputs(text, fp) == EOF || fclose(fp) != 0)
-        fail_msg("cannot write %s", path);
-}
 
 /* run_shell; with TEST_TIMING=1 in the environment it prints how long each
  * command took (where the seconds of this test go). */
@@ -908,11 +887,6 @@ static void exercises_go_from_warm_up_to_challenge_and_a_test_checks_one(void **
                  "checks it", page, lesson);
 }
 
-static int compare_names(const void *a, const void *b)
-{
-    return strcmp(a, b);
-}
-
 int main(void)
 {
     /* -O2 builds more slowly than -O0, but the lessons' tests (the benchmark
@@ -933,7 +907,7 @@ int main(void)
         if (isdigit((unsigned char)e->d_name[0]) && isdigit((unsigned char)e->d_name[1]))
             snprintf(lessons[n++], sizeof lessons[0], "%s", e->d_name);
     closedir(d);
-    qsort(lessons, (size_t)n, sizeof lessons[0], compare_names);
+    qsort(lessons, (size_t)n, sizeof lessons[0], compare_strings);
     for (int i = 0; i < n; i++) {
         snprintf(names[i], sizeof names[0], "exercises_of_%.200s", lessons[i]);
         tests[i] = (struct CMUnitTest){names[i],

@@ -45,11 +45,6 @@ static const char *const MUST_TAKE_ALL[] = {"01_ybuffer", "02_zbuffer", "03_pers
 typedef enum { TOOL_TRACE, TOOL_ASCII, TOOL_COMPARE, TOOL_STEPS, TOOL_COUNT } Tool;
 static const char *const TOOL_FLAG[TOOL_COUNT] = {"--trace", "--ascii", "--compare", "--steps"};
 
-static int compare_names(const void *a, const void *b)
-{
-    return strcmp((const char *)a, (const char *)b);
-}
-
 /* lessons/NN_name directories, sorted. */
 static int find_lessons(char names[MAX_LESSONS][NAME_MAX_LEN])
 {
@@ -64,7 +59,7 @@ static int find_lessons(char names[MAX_LESSONS][NAME_MAX_LEN])
             snprintf(names[n++], NAME_MAX_LEN, "%s", s);
     }
     closedir(d);
-    qsort(names, (size_t)n, NAME_MAX_LEN, compare_names);
+    qsort(names, (size_t)n, NAME_MAX_LEN, compare_strings);
     return n;
 }
 

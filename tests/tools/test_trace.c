@@ -55,16 +55,6 @@ static const char *const THREE_TRIANGLES =
     "v -4 0.8 -4\nv 2.4 0.8 -4\nv 0 -2.08 -4\n"
     "f 1 2 3\nf 4 5 6\nf 7 8 9\n";
 
-static const char *write_obj(const char *dir, const char *name, const char *text)
-{
-    const char *path = path_join(dir, name);
-    FILE *f = fopen(path, "w");
-    assert_non_null(f);
-    fputs(text, f);
-    fclose(f);
-    return path;
-}
-
 /* The text after the summary: from the line that starts with `first` on. */
 static const char *from_line(const char *out, const char *first)
 {
@@ -79,7 +69,7 @@ static const char *from_line(const char *out, const char *first)
 static void expect_trace(const char *lesson, const char *pixel, const char *expected)
 {
     const char *dir = test_dir("tools_trace");
-    const char *obj = write_obj(dir, "three.obj", THREE_TRIANGLES);
+    const char *obj = write_text_in(dir, "three.obj", THREE_TRIANGLES);
     const char *args[] = {"--obj", obj, "--out", path_join(dir, "three.png"), "--width", "80",
                           "--height", "30", "--eye", "0,0,0", "--target", "0,0,-1", "--up",
                           "0,1,0", "--fovy", FOVY_TAN_06, "--near", "1", "--far", "100",
@@ -160,7 +150,7 @@ static void trace_shows_every_fragment_failing_in_the_clear_zero_bug(void **stat
 {
     (void)state;
     const char *dir = test_dir("tools_trace_bug");
-    const char *obj = write_obj(dir, "three.obj", THREE_TRIANGLES);
+    const char *obj = write_text_in(dir, "three.obj", THREE_TRIANGLES);
     const char *args[] = {"--obj", obj, "--out", path_join(dir, "three.png"), "--width", "80",
                           "--height", "30", "--eye", "0,0,0", "--target", "0,0,-1", "--up",
                           "0,1,0", "--fovy", FOVY_TAN_06, "--near", "1", "--far", "100",
