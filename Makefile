@@ -5,6 +5,8 @@
 #   make test             build and run every test; LESSON=03 runs one lesson's
 #   make update-expected LESSON=NN   accept the current pictures of lesson NN's tests
 #   make diff FROM=02 TO=03   what lesson 03 changes in lesson 02's code
+#   make reading          per lesson: the files a reader opens, the solution
+#                         lines, and the size of the diff to the next lesson
 #   make sanitize         make test and make run again, under ASan and UBSan
 #   make fuzz SECONDS=60  each libFuzzer target of tests/fuzz/ (needs clang)
 #   make valgrind         make run under valgrind memcheck
@@ -45,7 +47,7 @@ TEST_BIN   := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 
 DEPS_OK    := $(BUILD)/.deps-ok
 
-.PHONY: all run test clean update-expected deps tools diff
+.PHONY: all run test clean update-expected deps tools diff reading
 # Keep object files: they are intermediate to make, but rebuilding them all on
 # every change would make each edit-test cycle slow.
 .SECONDARY:
@@ -116,6 +118,9 @@ tools: $(TOOLS)
 
 diff:
 	@sh scripts/lesson-diff.sh $(FROM) $(TO)
+
+reading:
+	@sh scripts/reading.sh
 
 clean:
 	rm -rf $(BUILD) out

@@ -7,7 +7,6 @@
 #include "file.h"
 
 #define AGREED_DIM 2       /* pixels both rules agree on are shown at half brightness */
-#define DIFF_PATH_MAX 4096 /* room for the path of the diff picture of --compare */
 
 const Rgb NAIVE_MARK = {255, 0, 255};
 
@@ -23,7 +22,7 @@ bool compare_naive_path_ok(const Options *opt, const char *path, Error *err)
     for (size_t i = 0; i < sizeof name / sizeof name[0]; i++)
         if (same_path(other[i], path))
             return error_set(err, "%s and --compare-naive both name %s", name[i], path);
-    char diff[DIFF_PATH_MAX];
+    char diff[PATH_TEXT_MAX];
     if (opt->compare && opt->out && compare_diff_path(opt->out, diff, sizeof diff) &&
         same_path(diff, path))
         return error_set(err, "--compare-naive names %s, where the diff picture of --out goes",

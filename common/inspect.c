@@ -55,7 +55,7 @@ static bool write_frame(Inspection *in, const Target *t, Error *err)
 bool inspect_begin(Inspection *in, const Render *r, Target *t, const Rasterizer *rz,
                    const DepthRule *rule, const Options *opt, Error *err)
 {
-    Inspection fresh = {r, rz, rule, opt, 0, 0, 0};
+    Inspection fresh = {.r = r, .rz = rz, .rule = rule, .opt = opt};
     *in = fresh;
     if (opt->trace_set)
         target_trace_pixel(t, opt->trace_x, opt->trace_y);

@@ -326,9 +326,8 @@ static bool bounding_sphere(const Mesh *m, Vec3 *centre, double *radius)
 
 SceneInfo render_fit_camera(const Mesh *m, int width, int height)
 {
-    const double pi = 3.14159265358979323846;
     /* The narrower of the two fields of view decides the distance. */
-    double half_fovy = FIT_FOVY / 2 * pi / 180;
+    double half_fovy = FIT_FOVY / 2 * PI / 180;
     double half_fovx = atan(tan(half_fovy) * width / height);
     double half = fmin(half_fovy, half_fovx);
 

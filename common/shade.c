@@ -7,7 +7,7 @@
 #include "target.h"
 
 const Rgb FLAT_BACKGROUND = {24, 28, 40};
-static const Rgb ID_BACKGROUND = {0, 0, 0};
+const Rgb ID_BACKGROUND = {0, 0, 0};
 
 /* Faces without a material take these in turn: distinct hues of similar
  * brightness, so that neighbouring faces of a built-in scene are told apart. */

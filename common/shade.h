@@ -29,6 +29,7 @@ typedef enum { SHADE_FLAT, SHADE_ID, SHADE_DEPTH } ShadeMode;
 #define SHADE_DIFFUSE 0.75
 
 extern const Rgb FLAT_BACKGROUND; /* (24, 28, 40) */
+extern const Rgb ID_BACKGROUND;   /* black: no face */
 
 /* The face's colour before lighting: material Kd, else palette[face % size]. */
 Rgb face_base_colour(const Mesh *m, int face);

@@ -83,6 +83,6 @@ void trace_log_append(TraceLog *log, int face, float value, float stored, bool p
         log->overflowed = true; /* keep what we have, say that it is cut */
         return;
     }
-    TraceEntry e = {face, value, stored, passed};
+    TraceEntry e = {.face = face, .value = value, .stored = stored, .passed = passed};
     log->entries[log->count++] = e;
 }

@@ -11,7 +11,8 @@
 #                 replace them), over every file of the lesson.
 #   diff to next  lines of `make diff FROM=<this> TO=<next>`; where the next
 #                 lesson replaces a file whole (its REPLACES), the lines of
-#                 everything else, with the replacing files counted apart.
+#                 everything else, with the replacing files (and the note that
+#                 names them) counted apart.
 # --tsv prints one line per lesson, tab-separated, for tests:
 #   lesson  files  path_lines  main_lines  solution_lines  next  diff_lines  replacing_lines
 set -eu
@@ -44,7 +45,8 @@ lines_of() { wc -l <"$1" | tr -d ' '; }
 
 solution_lines() {
     find "$1" -type f \( -name '*.c' -o -name '*.h' \) -exec awk '
-        /SOLUTION BEGIN/ { inside = 1; next }
+        /SOLUTION BEGIN/ { inside = 1; hint = ($0 !~ /\*\//); next }
+        hint { if ($0 ~ /\*\//) hint = 0; next } # the rest of the hint comment
         /SOLUTION STUB/ { inside = 0 }
         /SOLUTION END/ { inside = 0; next }
         inside { n++ }
@@ -66,15 +68,16 @@ while [ $# -gt 0 ]; do
     next="-" diff_lines="-" replacing="-"
     if [ $# -gt 0 ]; then
         next=${1#lessons/}
-        replacing=0
-        if [ -f "$1/REPLACES" ]; then
-            for f in $(sed -e 's/#.*//' "$1/REPLACES" | awk 'NF == 2 { print $1 }'); do
-                n=$(awk -v mode=clean -f "$regions" "$1/$f" | wc -l | tr -d ' ')
-                replacing=$((replacing + n + 3)) # the file, its diff and --- +++ @@ lines
-            done
-        fi
-        all=$(sh scripts/lesson-diff.sh "${name%%_*}" "${next%%_*}" | wc -l | tr -d ' ')
-        diff_lines=$((all - replacing))
+        # The diff's lines, apart from the files shown whole because they
+        # replace one (with the note that says so at its top).
+        counts=$(sh scripts/lesson-diff.sh "${name%%_*}" "${next%%_*}" | awk '
+            /^# .* replaces .*: shown whole below$/ {
+                f = $2; sub(/.*\//, "", f); whole[f] = 1; r++; next }
+            /^diff / { f = $NF; sub(/.*\//, "", f); in_whole = (f in whole) }
+            { if (in_whole) r++; else o++ }
+            END { printf "%d %d", o, r }')
+        diff_lines=${counts% *}
+        replacing=${counts#* }
     fi
     if [ "$tsv" -eq 1 ]; then
         printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$name" "$files" "$total" "$main" "$sol" \

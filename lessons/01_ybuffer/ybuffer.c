@@ -4,6 +4,8 @@
 
 #include <stdlib.h>
 
+#include "intmath.h"
+
 bool ybuffer_init(YBuffer *yb, int width, Error *err)
 {
     TraceLog no_trace = {-1, NULL, 0, 0, false};
@@ -48,15 +50,6 @@ void clear_ybuffer(YBuffer *yb)
 void ybuffer_trace_column(YBuffer *yb, int x)
 {
     yb->trace.pixel = x;
-}
-
-/* a / b rounded towards minus infinity (C's "/" rounds towards zero), b > 0. */
-static int64_t floor_div(int64_t a, int64_t b)
-{
-    int64_t q = a / b;
-    if (a % b != 0 && a < 0)
-        q--;
-    return q;
 }
 
 int64_t round_half_up(int64_t p, int64_t q)

@@ -241,7 +241,8 @@ void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, in
                 continue;
             }
             entered = true;
-            double d = interpolate_depth(barycentric_weights(e0, e1, e2, inv_area), a.d, b.d, c.d);
+            Barycentric w = barycentric_weights(e0, e1, e2, inv_area);
+            double d = interpolate_depth(w, a.d, b.d, c.d);
             if (d > far)
                 continue; /* beyond the far plane: discarded before any test */
             depth_test(t, (size_t)y * (size_t)t->width + (size_t)x, face, (float)d);

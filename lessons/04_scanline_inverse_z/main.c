@@ -19,7 +19,7 @@ static void print_front_object(const Target *t)
         printf("  front object: nothing at the screen centre (%d,%d)\n", x, y);
     else
         printf("  front object: face %d at d = %.3f at the screen centre (%d,%d)\n",
-               t->face[(size_t)y * (size_t)t->width + (size_t)x], d, x, y);
+               t->face[y * t->width + x], d, x, y);
 }
 
 static const Lesson LESSON = {

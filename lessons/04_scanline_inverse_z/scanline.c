@@ -1,18 +1,15 @@
-/* scanline.c: lesson 04's z-buffer. The buffer holds 1/d, cleared to 0; a
- * convex polygon is drawn whole by walking its left and right edges down the
- * screen and filling the span between them on every row. See scanline.h and
- * docs/04_scanline_inverse_z.md. */
+/* scanline.c: lesson 04's z-buffer, step by step (scanline.h, and
+ * docs/04_scanline_inverse_z.md). */
 #include "scanline.h"
 
 #include <math.h>
 
+#include "intmath.h"
 #include "polygon.h"
 
 #define S ((int64_t)SUBPIXEL_ONE) /* sub-pixel units per pixel */
 #define HALF_PIXEL ((int64_t)SUBPIXEL_HALF)
-/* draw_polygon snaps a polygon's corners once, into an array on the stack of
- * this many; a polygon with more corners is drawn as its triangles. */
-#define POLYGON_MAX_CORNERS 256
+#define POLYGON_MAX_CORNERS 256 /* snapped on the stack; more: drawn as triangles */
 
 /* A polygon corner as the rasterizer uses it: snapped, with its 1/d. */
 typedef struct {
@@ -27,18 +24,6 @@ typedef struct {
     int n, at, bottom, dir;
 } Chain;
 
-/* Integer division rounding down / up, for any sign of a (b > 0). */
-static int64_t floor_div(int64_t a, int64_t b)
-{
-    int64_t q = a / b;
-    return (a % b != 0 && a < 0) ? q - 1 : q;
-}
-
-static int64_t ceil_div(int64_t a, int64_t b)
-{
-    return -floor_div(-a, b);
-}
-
 /* The first row whose centre y + 0.5 is at or below y (sub-pixel units). */
 static int64_t first_row_at_or_below(int64_t y)
 {
@@ -50,13 +35,6 @@ static int64_t first_row_at_or_below(int64_t y)
 static int64_t snap(double pixels)
 {
     return (int64_t)floor(pixels * S + 0.5);
-}
-
-/* 1/d is computed at the corners only; between them it is stepped. */
-static Corner corner(const ScreenVertex *v)
-{
-    Corner c = {snap(v->x), snap(v->y), 1.0 / v->d};
-    return c;
 }
 
 /* Every pixel to 1/d = 0, a surface infinitely far: nothing drawn yet. */
@@ -238,7 +216,9 @@ bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
     for (int i = 0; i < n; i++) {
         if (!corner_in_range(&v[i]))
             return false;
-        c[i] = corner(&v[i]); /* snapped once: everything below works on c */
+        /* Snapped once: everything below works on c. 1/d is computed at the
+         * corners only; between them it is stepped. */
+        c[i] = (Corner){snap(v[i].x), snap(v[i].y), 1.0 / v[i].d};
     }
     int turn; /* > 0: clockwise on the screen (y down) */
     if (!convex_on_screen(v, n, SUBPIXEL_ONE, &turn))

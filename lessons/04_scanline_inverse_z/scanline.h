@@ -3,40 +3,35 @@
  *   stored value   1/d, the reciprocal of the view depth
  *   cleared to     0, which means "infinitely far"
  *   a fragment     wins when its 1/d > stored (ties keep the first one drawn)
- *   rasterizer     a convex polygon, drawn whole: its left and right edges are
- *                  walked from top to bottom one scanline at a time, and each
- *                  span between them is filled left to right. x and 1/d step
- *                  by a constant increment per scanline along an edge, and 1/d
- *                  by a constant increment per pixel along a span.
- *   fill rule      a row is drawn when its centre y + 0.5 is in [top, bottom),
- *                  a pixel when its centre x + 0.5 is in [left, right): the
- *                  top-left rule of lessons 02 and 03, in scanline form.
+ *   rasterizer     a convex polygon, drawn whole: its left and right edges
+ *                  walked down one scanline at a time, x and 1/d stepping by
+ *                  a constant per row; each span filled left to right, 1/d
+ *                  stepping by a constant per pixel
+ *   fill rule      row centre y + 0.5 in [top, bottom), pixel centre x + 0.5
+ *                  in [left, right): lesson 03's top-left rule, scanline form
  *
- * Vertices are snapped to 1/256 pixel (SUBPIXEL_BITS = 8) as in lesson 03, and
- * an edge's x is carried exactly, as a whole pixel plus a fraction in integers,
- * so lesson 04 covers exactly the pixels lesson 03 covers. */
+ * Corners are snapped to 1/256 pixel as in lesson 03 and an edge's x is kept
+ * exactly (a whole pixel and a fraction, in integers), so lesson 04 covers
+ * exactly the pixels lesson 03 covers. */
 #ifndef SCANLINE_H
 #define SCANLINE_H
 
-#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
 #include "rasterizer.h"
 #include "target.h"
 
-/* Nothing drawn yet: 1/d = 0 is a surface infinitely far away, so every real
- * surface (1/d > 0) is nearer. No "huge value" is needed. */
+/* Nothing drawn yet: 1/d = 0 is infinitely far, so every real surface
+ * (1/d > 0) is nearer. No "huge value" is needed. */
 #define CLEARED_INV_DEPTH 0.0f
 
 #define SUBPIXEL_BITS 8                   /* as GPUs do: 1/256 of a pixel */
 #define SUBPIXEL_ONE (1 << SUBPIXEL_BITS) /* one pixel in fixed point */
 #define SUBPIXEL_HALF (SUBPIXEL_ONE / 2)  /* half a pixel: pixel centres */
 
-/* The largest |x| or |y| (in pixels) draw_polygon accepts. 2^21 pixels is
- * 2^29 sub-pixel units, so a difference of two coordinates is below 2^30 and
- * the products edge_setup forms stay below 2^61: far inside 64 bits.
- * Polygons reaching further are clipped to a guard band first. */
+/* The largest |x| or |y| (pixels) draw_polygon takes: 2^29 sub-pixel units, so
+ * edge_setup's products stay below 2^61. Polygons reaching further are cut first. */
 #define SCANLINE_MAX_COORD ((double)(1 << 21))
 
 /* One edge of the polygon, walked one scanline at a time. On the current row

@@ -259,7 +259,9 @@ static void face_checks_name_the_faces_and_their_id_colours(void **state)
     image_free(&im);
 
     Target t;
-    assert_true(target_init(&t, 4, 4, 0.0f, &err));
+    assert_true(target_init(&t, 4, 4, &err));
+    for (int i = 0; i < 4 * 4; i++)
+        t.face[i] = NO_FACE;
     t.face[1 * 4 + 3] = 7;
     expect_count(7, target_face_at(&t, 3, 1), "face in the target");
     assert_true(target_face_message(msg, sizeof msg, &t, 3, 1, 7, ""));

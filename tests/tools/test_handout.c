@@ -501,6 +501,13 @@ static void expect_no_solution_line(const SolutionLines *s, const char *dir, con
     closedir(d);
 }
 
+/* Files, not directories (a lesson's extras/ is one). */
+static bool is_regular_file(const char *path)
+{
+    struct stat st;
+    return stat(path, &st) == 0 && S_ISREG(st.st_mode);
+}
+
 /* The lesson's files with regions (and its page, if it has some). */
 static SolutionLines *solution_lines(const char *lesson)
 {
@@ -512,7 +519,7 @@ static SolutionLines *solution_lines(const char *lesson)
     assert_non_null(d);
     struct dirent *e;
     while ((e = readdir(d)) != NULL)
-        if (e->d_name[0] != '.')
+        if (e->d_name[0] != '.' && is_regular_file(path_join(dir, e->d_name)))
             collect_regions(s, path_join(dir, e->d_name));
     closedir(d);
     char page[PATH_MAX_LEN];
@@ -588,9 +595,11 @@ static void todo_functions(const char *lesson_dir, char *out, size_t size)
     assert_non_null(d);
     struct dirent *e;
     while ((e = readdir(d)) != NULL) {
-        if (e->d_name[0] == '.')
+        char file[PATH_MAX_LEN];
+        snprintf(file, sizeof file, "%s/%s", lesson_dir, e->d_name);
+        if (e->d_name[0] == '.' || !is_regular_file(file))
             continue;
-        char *text = read_text(path_join(lesson_dir, e->d_name));
+        char *text = read_text(file);
         char current[256] = "";
         bool top_level_todo = false;
         for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n")) {
@@ -818,7 +827,7 @@ static void handout_round_trip(void **state)
     expect_tests_fail_with_hints(h, lesson);
 
     /* 3. The solution put back: full marks, every test passed and in points.txt. */
-    shell_ok(NULL, "cp lessons/%s/* %s/lessons/%s/", lesson, h, lesson);
+    shell_ok(NULL, "cp -R lessons/%s/. %s/lessons/%s/", lesson, h, lesson);
     shell_ok(h, "make %s grade LESSON=%.2s", make_opts, lesson);
     Grade full = read_grade(build);
     if (full.max <= 0 || full.score != full.max)

@@ -1,23 +1,22 @@
-/* test_lesson_diffs.c: what a lesson changes in the one before stays short.
+/* test_lesson_diffs.c: each lesson reads in one sitting, and `make diff`
+ * between two lessons shows only the later one's idea.
  *
- * `make diff FROM=02 TO=03` shows the source difference between two lessons,
- * which is what the later lesson teaches; each page from 03 on links it, kept
- * in docs/diffs/. Two checks per pair of consecutive lessons:
+ * The measures are those of `make reading` (scripts/reading.sh), checked here
+ * against budgets:
  *
- *   1. A line budget per file: lines added plus lines removed, as
- *      `scripts/lesson-diff.sh --stat` counts them. When a file passes its
- *      budget, the test names the file, its count and its budget. A file that
- *      appears in a diff without a budget has budget 0: a new file in a lesson
- *      is a decision, and its budget says so. The budgets sit a little above
- *      today's counts (about a tenth, at least 10 lines), so that a small fix
- *      passes and a lesson that grows by a feature does not.
+ *   reading path   main.c, the taught files at the top of the lesson
+ *                  directory, and the headers they include directly: at most
+ *                  READING_MAX lines in all; main.c at most MAIN_MAX.
+ *   make diff      02 -> 03: at most 150 lines, the 1/d change.
+ *                  A file the later lesson's REPLACES names is shown whole
+ *                  (lesson 04's scanline.c replaces lesson 03's raster.c):
+ *                  everything else of 03 -> 04 at most 80 lines, of any later
+ *                  pair at most 200.
  *
- *   2. docs/diffs/<FROM>_to_<TO>.diff, which the lesson page links, is the
- *      diff of today's code (regenerate it with the command the message gives).
- *
- * 01 -> 02 has no budget: lesson 01 is a one-row program of its own (segments,
- * a y-buffer of ints), and lesson 02 starts the 3-D series from scratch; their
- * diff is both programs whole, and nothing in it is a "change". */
+ * The diff is counted here from the output of scripts/lesson-diff.sh, file by
+ * file, and must agree with what `make reading` prints. Each lesson page names
+ * its reading path, in order, under "## Reading the code"; the diffs a page
+ * links (docs/diffs/) are today's. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -31,60 +30,22 @@
 
 #include "error.h"
 #include "file.h"
+#include "test_support.h"
 
+#define READING_MAX 600
+#define MAIN_MAX 80
 #define DIFF_MAX_BYTES ((size_t)1 << 22)
+#define MAX_LESSONS 16
+#define MAX_PATH_FILES 32
 
 typedef struct {
-    const char *from, *to;
-    const char *file;
-    int budget; /* lines added + removed */
-} Budget;
-
-/* The budgets, per pair and file. Their sums are the pairs' budgets. */
-static const Budget BUDGETS[] = {
-    /* 02 -> 03: d is blended as 1/d (raster.c); --compare-naive comes
-     * (main.c, drawn by common/compare_naive.c); lesson 02's painter and two
-     * bugs go, lesson 03's negated-w bug comes (bugs.c). */
-    {"02", "03", "bugs.c", 165},
-    {"02", "03", "bugs.h", 45},
-    {"02", "03", "main.c", 120},
-    {"02", "03", "painter.c", 80},
-    {"02", "03", "painter.h", 28},
-    {"02", "03", "raster.c", 65},
-    {"02", "03", "raster.h", 34},
-    /* 03 -> 04: the triangle rasterizer gives way to a scanline polygon filler
-     * storing 1/d, so raster.c/h go and scanline.c/h come whole; the negated-w
-     * bug stays in lesson 03. */
-    {"03", "04", "bugs.c", 40},
-    {"03", "04", "bugs.h", 28},
-    {"03", "04", "main.c", 127},
-    {"03", "04", "raster.c", 270}, /* 246 since the edge functions are stepped (make bench) */
-    {"03", "04", "raster.h", 75},
-    {"03", "04", "scanline.c", 385},
-    {"03", "04", "scanline.h", 125},
-};
-#define BUDGET_COUNT ((int)(sizeof BUDGETS / sizeof BUDGETS[0]))
-
-static const char *const PAIRS[][2] = {{"02", "03"}, {"03", "04"}};
-#define PAIR_COUNT ((int)(sizeof PAIRS / sizeof PAIRS[0]))
-
-static int budget_of(const char *from, const char *to, const char *file)
-{
-    for (int i = 0; i < BUDGET_COUNT; i++)
-        if (!strcmp(BUDGETS[i].from, from) && !strcmp(BUDGETS[i].to, to) &&
-            !strcmp(BUDGETS[i].file, file))
-            return BUDGETS[i].budget;
-    return 0;
-}
-
-static int pair_budget(const char *from, const char *to)
-{
-    int sum = 0;
-    for (int i = 0; i < BUDGET_COUNT; i++)
-        if (!strcmp(BUDGETS[i].from, from) && !strcmp(BUDGETS[i].to, to))
-            sum += BUDGETS[i].budget;
-    return sum;
-}
+    char name[64];
+    int files, path_lines, main_lines, solution_lines;
+    char next[64];
+    int diff_lines, replacing_lines; /* -1 for the last lesson */
+    char path[MAX_PATH_FILES][128];  /* the reading path, in order */
+    int path_count;
+} Reading;
 
 /* The whole output of a shell command; fails the test when it cannot run. */
 static char *command_output(const char *command)
@@ -110,45 +71,196 @@ static char *command_output(const char *command)
     return text;
 }
 
-static void every_lesson_diff_stays_within_its_line_budget(void **state)
+/* Every lesson as `make reading` measures it: the --tsv lines, and the
+ * reading paths from the table (its indented lines). */
+static int read_readings(Reading *out)
+{
+    char *tsv = command_output("sh scripts/reading.sh --tsv"), *save = NULL;
+    int n = 0;
+    for (char *line = strtok_r(tsv, "\n", &save); line && n < MAX_LESSONS;
+         line = strtok_r(NULL, "\n", &save)) {
+        Reading *r = &out[n];
+        memset(r, 0, sizeof *r);
+        char diff[32], replacing[32];
+        if (sscanf(line, "%63s %d %d %d %d %63s %31s %31s", r->name, &r->files, &r->path_lines,
+                   &r->main_lines, &r->solution_lines, r->next, diff, replacing) != 8)
+            fail_msg("make reading --tsv printed a line it should not: %s", line);
+        r->diff_lines = strcmp(diff, "-") == 0 ? -1 : atoi(diff);
+        r->replacing_lines = strcmp(replacing, "-") == 0 ? -1 : atoi(replacing);
+        n++;
+    }
+    free(tsv);
+    char *table = command_output("sh scripts/reading.sh");
+    int k = -1;
+    save = NULL;
+    for (char *line = strtok_r(table, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
+        if (line[0] != ' ') {
+            for (k = 0; k < n && strncmp(line, out[k].name, strlen(out[k].name)) != 0; k++)
+                ;
+            continue;
+        }
+        char file[128];
+        int lines;
+        if (k < 0 || k >= n || sscanf(line, " %127s %d", file, &lines) != 2)
+            continue;
+        Reading *r = &out[k];
+        if (r->path_count < MAX_PATH_FILES)
+            snprintf(r->path[r->path_count++], sizeof r->path[0], "%s", file);
+    }
+    free(table);
+    if (n < 4)
+        fail_msg("make reading listed %d lessons, expected at least 4", n);
+    return n;
+}
+
+/* A description for the expect_ checks, printf-style (one at a time). */
+static const char *what(const char *fmt, ...)
+{
+    static char text[256];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(text, sizeof text, fmt, ap);
+    va_end(ap);
+    return text;
+}
+
+static int lines_in_file(const char *path)
+{
+    char *text = read_text(path);
+    int n = 0;
+    for (const char *c = text; *c; c++)
+        n += *c == '\n';
+    free(text);
+    return n;
+}
+
+static void every_reading_path_fits_in_one_sitting(void **state)
 {
     (void)state;
-    for (int k = 0; k < PAIR_COUNT; k++) {
-        const char *from = PAIRS[k][0], *to = PAIRS[k][1];
-        char command[128];
-        snprintf(command, sizeof command, "sh scripts/lesson-diff.sh --stat %s %s", from, to);
-        char *stat = command_output(command), *save = NULL;
-        int total = 0;
-        char over[2048] = "";
-        for (char *line = strtok_r(stat, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
-            int added, removed;
-            char file[256];
-            if (sscanf(line, "%d %d %255s", &added, &removed, file) != 3)
-                fail_msg("%s printed a line that is not \"<added> <removed> <file>\": %s",
-                         command, line);
-            int changed = added + removed, budget = budget_of(from, to, file);
-            total += changed;
-            if (changed > budget) {
-                size_t used = strlen(over);
-                snprintf(over + used, sizeof over - used,
-                         "\n  %s grew: %d lines changed (+%d -%d), budget %d%s", file, changed,
-                         added, removed, budget,
-                         budget == 0 ? " (a file with no budget: give it one in this test)" : "");
+    Reading r[MAX_LESSONS];
+    int n = read_readings(r);
+    for (int k = 0; k < n; k++) {
+        /* The count is the files' own: add them up again. */
+        int sum = 0;
+        for (int i = 0; i < r[k].path_count; i++)
+            sum += lines_in_file(r[k].path[i]);
+        expect_count(r[k].path_count, r[k].files, what("files on the reading path of %s", r[k].name));
+        expect_count(sum, r[k].path_lines, what("lines on the reading path of %s", r[k].name));
+        if (r[k].path_lines > READING_MAX)
+            fail_msg("%s: its reading path is %d lines, more than %d (make reading lists "
+                     "the files): move what the lesson does not teach out of them",
+                     r[k].name, r[k].path_lines, READING_MAX);
+        expect_at_most(MAIN_MAX, r[k].main_lines, what("lines in %s's main.c", r[k].name));
+        expect_at_least(1, r[k].solution_lines, what("solution lines in %s", r[k].name));
+    }
+}
+
+/* Lines of `make diff FROM TO`, apart from the sections of files shown whole
+ * because they replace a file (the note lines at the top count with them). */
+static void count_diff(const char *from, const char *to, int *other, int *replacing)
+{
+    char command[128];
+    snprintf(command, sizeof command, "sh scripts/lesson-diff.sh %s %s", from, to);
+    char *text = command_output(command), *save = NULL;
+    char replaced[8][64];
+    int n_replaced = 0;
+    bool in_replacing = false;
+    *other = *replacing = 0;
+    for (char *line = strtok_r(text, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
+        const char *shown = strstr(line, " replaces ");
+        if (strncmp(line, "# ", 2) == 0 && shown && n_replaced < 8) {
+            /* "# lessons/04_x/scanline.c replaces lessons/03_y/raster.c: shown whole below" */
+            const char *slash = shown;
+            while (slash > line && slash[-1] != '/')
+                slash--;
+            snprintf(replaced[n_replaced++], sizeof replaced[0], "%.*s", (int)(shown - slash),
+                     slash);
+            (*replacing)++;
+            continue;
+        }
+        if (strncmp(line, "diff ", 5) == 0) {
+            in_replacing = false;
+            for (int i = 0; i < n_replaced; i++) {
+                size_t len = strlen(line), m = strlen(replaced[i]);
+                if (len > m && strcmp(line + len - m, replaced[i]) == 0 && line[len - m - 1] == '/')
+                    in_replacing = true;
             }
         }
-        free(stat);
-        if (over[0])
-            fail_msg("make diff FROM=%s TO=%s is over budget (%d lines changed, budget %d in "
-                     "all):%s\nIf the lesson should teach more, raise the budget in "
-                     "tests/tools/test_lesson_diffs.c and say why; otherwise make the change "
-                     "smaller.", from, to, total, pair_budget(from, to), over);
+        if (in_replacing)
+            (*replacing)++;
+        else
+            (*other)++;
+    }
+    free(text);
+}
+
+static void every_lesson_diff_is_its_idea(void **state)
+{
+    (void)state;
+    Reading r[MAX_LESSONS];
+    int n = read_readings(r);
+    for (int k = 0; k + 1 < n; k++) {
+        char from[3], to[3];
+        snprintf(from, sizeof from, "%.2s", r[k].name);
+        snprintf(to, sizeof to, "%.2s", r[k + 1].name);
+        int other, replacing;
+        count_diff(from, to, &other, &replacing);
+        expect_count(other, r[k].diff_lines, what("make reading's diff lines from %s to %s", from,
+                     to));
+        if (strcmp(from, "01") == 0)
+            continue; /* lesson 02 starts the 3-D series: no budget (its page says so) */
+        int budget = strcmp(from, "02") == 0 ? 150 : strcmp(from, "03") == 0 ? 80 : 200;
+        if (other > budget)
+            fail_msg("make diff FROM=%s TO=%s is %d lines (besides %d in files shown whole), "
+                     "more than its budget of %d: keep what the lesson shows but does not hand "
+                     "on in its extras/, and out of the files the next lesson grows from",
+                     from, to, other, replacing, budget);
+        if (strcmp(from, "03") == 0)
+            expect_at_least(100, replacing, "lines of lesson 04's scanline files, shown whole");
+    }
+}
+
+/* The page of each lesson lists its reading path, in order, as the numbered
+ * items of its "## Reading the code" section: "1. `lessons/02_zbuffer/main.c`". */
+static void every_page_names_its_reading_path_in_order(void **state)
+{
+    (void)state;
+    Reading r[MAX_LESSONS];
+    int n = read_readings(r);
+    for (int k = 0; k < n; k++) {
+        char page[96];
+        snprintf(page, sizeof page, "docs/%.64s.md", r[k].name);
+        char *text = read_text(page);
+        char *section = strstr(text, "\n## Reading the code\n");
+        if (!section)
+            fail_msg("%s has no \"## Reading the code\" section naming its reading path", page);
+        char *end = strstr(section + 1, "\n## ");
+        if (end)
+            *end = '\0';
+        int found = 0;
+        char *save = NULL;
+        for (char *line = strtok_r(section, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
+            int number;
+            char file[128];
+            if (sscanf(line, "%d. `%127[^`]`", &number, file) != 2)
+                continue;
+            if (found >= r[k].path_count)
+                fail_msg("%s names %s, which is not on the reading path", page, file);
+            if (strcmp(file, r[k].path[found]) != 0)
+                fail_msg("%s: item %d of \"Reading the code\" is %s; make reading has %s there",
+                         page, found + 1, file, r[k].path[found]);
+            found++;
+        }
+        expect_count(r[k].path_count, found, what("files %s names under \"Reading the code\"", page));
+        free(text);
     }
 }
 
 static void linked_diffs_in_docs_are_the_diffs_of_the_code(void **state)
 {
     (void)state;
-    for (int k = 0; k < PAIR_COUNT; k++) {
+    static const char *const PAIRS[][2] = {{"02", "03"}, {"03", "04"}};
+    for (size_t k = 0; k < sizeof PAIRS / sizeof PAIRS[0]; k++) {
         const char *from = PAIRS[k][0], *to = PAIRS[k][1];
         char command[128], path[64];
         snprintf(command, sizeof command, "sh scripts/lesson-diff.sh %s %s", from, to);
@@ -169,8 +281,11 @@ static void linked_diffs_in_docs_are_the_diffs_of_the_code(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(every_lesson_diff_stays_within_its_line_budget),
+        cmocka_unit_test(every_reading_path_fits_in_one_sitting),
+        cmocka_unit_test(every_lesson_diff_is_its_idea),
+        cmocka_unit_test(every_page_names_its_reading_path_in_order),
         cmocka_unit_test(linked_diffs_in_docs_are_the_diffs_of_the_code),
     };
-    return cmocka_run_group_tests_name("tools: lesson diffs", tests, NULL, NULL);
+    return cmocka_run_group_tests_name("tools: reading paths and lesson diffs", tests, NULL,
+                                       NULL);
 }

@@ -33,8 +33,6 @@ static const LessonCli CLI = {
     .defaults = {.out = "out/01_ybuffer.png", .width = 800, .height = 16},
 };
 
-#define PATH_MAX_TEXT 4096 /* room for the path of the diff picture of --compare */
-
 /* What --trace and --ascii show: the y-buffer keeps y, and larger is nearer. */
 static const DepthRule Y_RULE = {"y-buffer", "y", "segment", LARGER_IS_NEARER};
 
@@ -43,7 +41,7 @@ static const DepthRule Y_RULE = {"y-buffer", "y", "segment", LARGER_IS_NEARER};
 static bool check_outputs(const Options *opt, Error *err)
 {
     enum { OUTPUTS = 4, PATHS = 6 };
-    char diff[PATH_MAX_TEXT];
+    char diff[PATH_TEXT_MAX];
     bool has_diff = opt->compare && compare_diff_path(opt->out, diff, sizeof diff);
     const char *name[PATHS] = {"--out", "--scene-out", "--ybuffer-out",
                                "the diff picture of --out", "--segments", "--compare"};
