@@ -8,7 +8,7 @@
 
 #define AGREED_DIM 2       /* pixels both rules agree on are shown at half brightness */
 
-const Rgb NAIVE_MARK = {255, 0, 255};
+static const Rgb NAIVE_MARK = {255, 0, 255}; /* magenta */
 
 static bool same_path(const char *a, const char *b)
 {

@@ -1,17 +1,16 @@
 /* compare_naive.h: where the naive rule goes wrong (--compare-naive FILE.png).
  *
- * Lessons 03 and 04 each give two rasterizers: the right one, which takes 1/d
- * to be linear on the screen, and the naive one, which takes d to be (lesson
- * 02's rule). The scene is drawn twice, once with each, and the picture of the right one is written with every pixel where the
- * naive rule shows another face (or a face where there is none, or none
- * where there is one) marked in NAIVE_MARK; every other pixel keeps its
- * colour at half brightness. */
+ * Lesson 03's extras give two rasterizers: the right one, which takes 1/d to
+ * be linear on the screen, and the naive one, which takes d to be (lesson
+ * 02's rule). The scene is drawn with each, and the picture of the right one
+ * is written with every pixel where the naive rule shows another face (or a
+ * face where there is none, or none where there is one) in magenta; every
+ * other pixel keeps its colour at half brightness. */
 #ifndef COMPARE_NAIVE_H
 #define COMPARE_NAIVE_H
 
 #include "render.h"
 
-extern const Rgb NAIVE_MARK; /* magenta */
 
 /* The picture may not replace an input or another output (--obj, --compare,
  * --out, --depth-out, --overdraw-out, the diff picture of --compare): false
