@@ -180,7 +180,7 @@ static void summary_agrees_with_the_written_files(void **state)
     }
     assert_int_equal(sum, tested);
     assert_int_equal(nonzero, covered);
-    assert_true(fabs(average - (double)tested / covered) < 0.006);
+    assert_true(fabs(average - (double)tested / (double)covered) < 0.006);
     free(over);
 
     float *depth;
