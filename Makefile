@@ -71,6 +71,11 @@ DEPS_OK    := $(BUILD)/.deps-ok
 # Keep object files: they are intermediate to make, but rebuilding them all on
 # every change would make each edit-test cycle slow.
 .SECONDARY:
+# No built-in rules: with them make would remake an included dependency file
+# build/bench/obj/bench_02_zbuffer.d by linking a bench_02_zbuffer.d.o that
+# the bench_%.o rule below would compile, and so on (.d.d.o, ...).
+MAKEFLAGS += --no-builtin-rules
+.SUFFIXES:
 .DEFAULT_GOAL := all
 
 all: $(BINS) $(TOOLS)
