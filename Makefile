@@ -8,6 +8,7 @@
 #   make sanitize         make test and make run again, under ASan and UBSan
 #   make fuzz SECONDS=60  each libFuzzer target of tests/fuzz/ (needs clang)
 #   make valgrind         make run under valgrind memcheck
+#   make compile_commands.json   what editors read to know how each file compiles
 #   make clean
 #
 # A new lesson is a new directory lessons/NN_name/ with a main.c: nothing here
@@ -134,6 +135,20 @@ update-expected: $(BINS) $(TOOLS) $(TEST_BIN)
 	    sh scripts/run-tests.sh $(TEST_BIN)
 
 tools: $(TOOLS)
+
+# compile_commands.json: every lesson, tool, test and benchmark compiled once,
+# afresh, in a build directory of its own (the usual one is left as it is),
+# under Debian's bear, which records each compiler command. Fuzz targets need
+# clang's libFuzzer flags and are left out: an editor takes their neighbours'.
+COMPDB_BUILD := $(BUILD)/compile-commands
+.PHONY: compile_commands.json
+compile_commands.json:
+	@sh scripts/ensure-deps.sh bear
+	@rm -rf $(COMPDB_BUILD)
+	bear --output $@.tmp -- $(MAKE) --no-print-directory BUILD=$(COMPDB_BUILD) \
+	    all $(patsubst $(BUILD)/%,$(COMPDB_BUILD)/%,$(TEST_BIN) $(BENCH_BINS))
+	@mv $@.tmp $@ && rm -rf $(COMPDB_BUILD)
+	@echo "compile_commands.json: $$(grep -c '"file":' $@) files"
 
 diff:
 	@sh scripts/lesson-diff.sh $(FROM) $(TO)
