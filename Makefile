@@ -10,6 +10,7 @@
 #   make sanitize         make test and make run again, under ASan and UBSan
 #   make fuzz SECONDS=60  each libFuzzer target of tests/fuzz/ (needs clang)
 #   make valgrind         make run under valgrind memcheck
+#   make compile_commands.json   what editors read to know how each file compiles
 #   make clean
 #
 # A new lesson is a new directory lessons/NN_name/ with a main.c: nothing here
@@ -18,12 +19,34 @@
 BUILD    ?= build
 CC       ?= cc
 OPT      ?= -O2 -g
-# docs/conventions.md: C11, warnings are errors, no contraction of a*b+c into fma so
-# that pictures do not change with the optimisation level.
-WARN     := -std=c11 -Wall -Wextra -Werror -pedantic
-CFLAGS   += $(OPT) $(WARN) -ffp-contract=off
-CPPFLAGS += -D_POSIX_C_SOURCE=200809L -Icommon
-LDLIBS   += -lm
+
+# Flags come in two kinds. OPT, CFLAGS, CPPFLAGS, LDFLAGS and LDLIBS are the
+# user's: `make CFLAGS=-O0` or `make OPT=-Og` replaces them. The REQUIRED_*
+# ones are the series' own, and every compile and link rule below (lessons,
+# tools, tests, bench, fuzz, sanitize) puts them after the user's, so that
+# no command line can take them away or turn them off (a later -std= or
+# -Werror wins): docs/conventions.md, C11, warnings are errors, and no
+# contraction of a*b+c into fma, so that pictures do not change with the
+# optimisation level. tests/tools/test_make_flags.c checks it.
+override WARN := -std=c11 -Wall -Wextra -Werror -pedantic \
+                 -Wshadow -Wconversion -Wmissing-prototypes
+override REQUIRED_CFLAGS   := $(WARN) -ffp-contract=off
+override REQUIRED_CPPFLAGS := -D_POSIX_C_SOURCE=200809L -Icommon
+override REQUIRED_LDLIBS   := -lm
+# What make sanitize and make fuzz add to every compile and link.
+MODE_CFLAGS :=
+
+# lessons/ do not pass every warning above yet: these are shown, not errors,
+# in lessons/ only (tools/, common/ and tests/ have none). Remove an entry
+# once no lesson has that warning.
+LESSON_WARN_NOT_ERROR := -Wno-error=sign-conversion
+# The flags of the file $< (lessons/ or not), in every compile rule.
+warn_of = $(REQUIRED_CFLAGS)$(if $(filter lessons/%,$(1)), $(LESSON_WARN_NOT_ERROR))
+
+# Every compile and link; OBJ_INCLUDES is per object (see the tests' objects).
+COMPILE = $(CC) $(REQUIRED_CPPFLAGS) $(OBJ_INCLUDES) $(CPPFLAGS) \
+          $(OPT) $(CFLAGS) $(MODE_CFLAGS) $(call warn_of,$<)
+LINK    = $(CC) $(OPT) $(CFLAGS) $(MODE_CFLAGS) $(REQUIRED_CFLAGS) $(LDFLAGS)
 
 # Evaluated when a recipe runs, i.e. after scripts/ensure-deps.sh has installed them.
 STB_CFLAGS    = $(shell pkg-config --cflags stb)
@@ -51,6 +74,11 @@ DEPS_OK    := $(BUILD)/.deps-ok
 # Keep object files: they are intermediate to make, but rebuilding them all on
 # every change would make each edit-test cycle slow.
 .SECONDARY:
+# No built-in rules: with them make would remake an included dependency file
+# build/bench/obj/bench_02_zbuffer.d by linking a bench_02_zbuffer.d.o that
+# the bench_%.o rule below would compile, and so on (.d.d.o, ...).
+MAKEFLAGS += --no-builtin-rules
+.SUFFIXES:
 .DEFAULT_GOAL := all
 
 all: $(BINS) $(TOOLS)
@@ -62,7 +90,7 @@ $(DEPS_OK): scripts/ensure-deps.sh
 
 $(BUILD)/obj/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) $(CFLAGS) $(STB_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
+	$(COMPILE) $(STB_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
 
 # The objects of lesson $(1) that its tests may link: all of it but main.c.
 lesson_objs = $(patsubst %.c,$(BUILD)/obj/%.o,$(filter-out %/main.c,$(wildcard lessons/$(1)/*.c lessons/$(1)/extras/*.c)))
@@ -74,11 +102,11 @@ lesson_all_objs = $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard lessons/$(1)/*.c le
 .SECONDEXPANSION:
 $(BUILD)/bin/%: $$(call lesson_all_objs,$$*) $(COMMON_OBJ)
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS)
+	$(LINK) $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 
 $(BUILD)/tools/%: $(BUILD)/obj/tools/%.o $(COMMON_OBJ)
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS)
+	$(LINK) $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 
 # A test binary links common/, the test helpers and its lesson (if any).
 # test_group: <group>/test_x -> <group> (a call, for the same reason).
@@ -86,17 +114,17 @@ test_group = $(patsubst %/,%,$(dir $(1)))
 $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(COMMON_OBJ) $(SUPPORT_OBJ) \
                   $$(call lesson_objs,$$(call test_group,$$*))
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) $(LDFLAGS) $^ -o $@ $(CMOCKA_LIBS) $(STB_LIBS) $(LDLIBS)
+	$(LINK) $^ -o $@ $(CMOCKA_LIBS) $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 
 # A lesson's extras/ include its taught header as "raster.h", as its own files do.
 # ($* is the stem of the compile rule, lessons/NN_name/...)
-$(BUILD)/obj/lessons/%.o: CPPFLAGS += -I$(word 1,$(subst /, ,$*))/$(word 2,$(subst /, ,$*))
+$(BUILD)/obj/lessons/%.o: OBJ_INCLUDES += -I$(word 1,$(subst /, ,$*))/$(word 2,$(subst /, ,$*))
 
 # Tests include their lesson's headers as "raster.h", and its extras' as "bugs.h".
 test_lesson_dir = lessons/$(notdir $(patsubst %/,%,$(dir $(1))))
-$(BUILD)/obj/tests/%.o: CPPFLAGS += -Itests/support -I$(call test_lesson_dir,$*) \
-                                    -I$(call test_lesson_dir,$*)/extras
-$(BUILD)/obj/tools/%.o: CPPFLAGS += -Itests/support
+$(BUILD)/obj/tests/%.o: OBJ_INCLUDES += -Itests/support -I$(call test_lesson_dir,$*) \
+                                        -I$(call test_lesson_dir,$*)/extras
+$(BUILD)/obj/tools/%.o: OBJ_INCLUDES += -Itests/support
 
 run: $(BINS)
 	@mkdir -p out
@@ -115,6 +143,20 @@ update-expected: $(BINS) $(TOOLS) $(TEST_BIN)
 	    sh scripts/run-tests.sh $(TEST_BIN)
 
 tools: $(TOOLS)
+
+# compile_commands.json: every lesson, tool, test and benchmark compiled once,
+# afresh, in a build directory of its own (the usual one is left as it is),
+# under Debian's bear, which records each compiler command. Fuzz targets need
+# clang's libFuzzer flags and are left out: an editor takes their neighbours'.
+COMPDB_BUILD := $(BUILD)/compile-commands
+.PHONY: compile_commands.json
+compile_commands.json:
+	@sh scripts/ensure-deps.sh bear
+	@rm -rf $(COMPDB_BUILD)
+	bear --output $@.tmp -- $(MAKE) --no-print-directory BUILD=$(COMPDB_BUILD) \
+	    all $(patsubst $(BUILD)/%,$(COMPDB_BUILD)/%,$(TEST_BIN) $(BENCH_BINS))
+	@mv $@.tmp $@ && rm -rf $(COMPDB_BUILD)
+	@echo "compile_commands.json: $$(grep -c '"file":' $@) files"
 
 diff:
 	@sh scripts/lesson-diff.sh $(FROM) $(TO)
@@ -136,6 +178,8 @@ clean:
 # A sanitizer or valgrind report ends the program with status 86, which no
 # lesson uses: a test that expects status 1 cannot mistake one for a failure.
 # The sanitized build keeps OPT (-O2 -g): some warnings depend on the level.
+# Their flags go in MODE_CFLAGS, with the required ones: a CFLAGS or OPT of
+# the command line does not remove them.
 
 SANITIZE_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 SANITIZE_ENV   := ASAN_OPTIONS=exitcode=86:detect_leaks=1 \
@@ -145,30 +189,32 @@ SANITIZE_ENV   := ASAN_OPTIONS=exitcode=86:detect_leaks=1 \
 
 sanitize:
 	@$(SANITIZE_ENV) $(MAKE) --no-print-directory BUILD=build/sanitize \
-	    OPT="$(OPT) $(SANITIZE_FLAGS)" test run
+	    MODE_CFLAGS="$(SANITIZE_FLAGS)" test run
 
 # A target is tests/fuzz/fuzz_<name>.c. When <name> is a lesson's directory it
 # links that lesson's objects but main.c: one binary per lesson, as lessons
 # share function names. scripts/fuzz.sh says where corpora and crashes go.
 FUZZ_BUILD := build/fuzz
 FUZZ_CC    := clang
-FUZZ_FLAGS := -O1 -g -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all
+FUZZ_OPT   := -O1 -g
+FUZZ_FLAGS := -fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all
 SECONDS    ?= 60
 FUZZ_NAMES := $(patsubst tests/fuzz/fuzz_%.c,%,$(sort $(wildcard tests/fuzz/fuzz_*.c)))
 FUZZ_RUN   := $(if $(FUZZ),$(foreach n,$(FUZZ_NAMES),$(if $(findstring $(FUZZ),$(n)),$(n))),$(FUZZ_NAMES))
 
 fuzz:
 	@sh scripts/check-fuzz-compiler.sh $(FUZZ_CC)
-	@$(MAKE) --no-print-directory BUILD=$(FUZZ_BUILD) CC=$(FUZZ_CC) OPT="$(FUZZ_FLAGS)" fuzz-build
+	@$(MAKE) --no-print-directory BUILD=$(FUZZ_BUILD) CC=$(FUZZ_CC) \
+	    OPT="$(FUZZ_OPT)" MODE_CFLAGS="$(FUZZ_FLAGS)" fuzz-build
 	@$(SANITIZE_ENV) sh scripts/fuzz.sh $(FUZZ_BUILD) $(SECONDS) $(FUZZ_RUN)
 
 fuzz-build: $(FUZZ_RUN:%=$(BUILD)/fuzz/fuzz_%)
 
 # ($* is the stem of the object rule: tests/fuzz/fuzz_<name>)
-$(BUILD)/obj/tests/fuzz/fuzz_%.o: CPPFLAGS += -Ilessons/$(patsubst tests/fuzz/fuzz_%,%,$*)
+$(BUILD)/obj/tests/fuzz/fuzz_%.o: OBJ_INCLUDES += -Ilessons/$(patsubst tests/fuzz/fuzz_%,%,$*)
 $(BUILD)/fuzz/fuzz_%: $(BUILD)/obj/tests/fuzz/fuzz_%.o $(COMMON_OBJ) $$(call lesson_objs,$$*)
 	@mkdir -p $(@D)
-	$(CC) $(CFLAGS) -fsanitize=fuzzer $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS)
+	$(LINK) -fsanitize=fuzzer $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 
 VALGRIND := valgrind --quiet --error-exitcode=86 --leak-check=full --show-leak-kinds=all \
             --errors-for-leak-kinds=all
@@ -220,10 +266,12 @@ grade-build: $(BUILD)/tools/time_limit $(BINS) $(TOOLS) $(GRADE_TESTS)
 # One binary per lesson, as lessons share function names: tests/bench/bench.c
 # with BENCH_RASTERIZER naming the lesson's Rasterizer, plus bench_limit.
 # Built in their own object directory with the release flags -O2 whatever
-# OPT says; not built by `make` or `make test`. tests/bench/run-bench.sh runs
+# OPT says (after CFLAGS, so that it wins there too), and the required flags;
+# not built by `make` or `make test`. tests/bench/run-bench.sh runs
 # the limit, then each lesson, prints one table and writes results.csv.
 BENCH_DIR     := $(BUILD)/bench
-BENCH_CFLAGS  := -O2 $(WARN) -ffp-contract=off
+BENCH_OPT     := -O2
+BENCH_CFLAGS   = $(CFLAGS) $(BENCH_OPT) $(REQUIRED_CFLAGS)
 # lesson=Rasterizer, for each lesson the benchmark times (if it exists).
 BENCH_TABLE   := 02_zbuffer=ZBUFFER 03_perspective_z=ZBUFFER \
                  04_scanline_inverse_z=SCANLINE_ZBUFFER
@@ -241,18 +289,19 @@ bench: $(BENCH_BINS)
 
 $(BENCH_DIR)/obj/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) -Itests/bench $(BENCH_CFLAGS) $(STB_CFLAGS) -MMD -MP -c $< -o $@
+	$(CC) $(REQUIRED_CPPFLAGS) -Itests/bench $(CPPFLAGS) $(CFLAGS) $(BENCH_OPT) $(call warn_of,$<) \
+	    $(STB_CFLAGS) -MMD -MP -c $< -o $@
 
 $(BENCH_DIR)/obj/bench_%.o: tests/bench/bench.c | $(DEPS_OK)
 	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) -Itests/bench $(BENCH_CFLAGS) -DBENCH_RASTERIZER=$(call bench_rasterizer,$*) \
-	    -MMD -MP -c $< -o $@
+	$(CC) $(REQUIRED_CPPFLAGS) -Itests/bench $(CPPFLAGS) $(BENCH_CFLAGS) \
+	    -DBENCH_RASTERIZER=$(call bench_rasterizer,$*) -MMD -MP -c $< -o $@
 
 $(BENCH_DIR)/bench_limit: $(BENCH_DIR)/obj/tests/bench/limit.o $(BENCH_SUPPORT)
-	$(CC) $(BENCH_CFLAGS) $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS)
+	$(CC) $(BENCH_CFLAGS) $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 
 $(BENCH_DIR)/bench_%: $(BENCH_DIR)/obj/bench_%.o $$(call bench_lesson_objs,$$*) $(BENCH_SUPPORT)
-	$(CC) $(BENCH_CFLAGS) $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS)
+	$(CC) $(BENCH_CFLAGS) $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 
 -include $(shell find $(BENCH_DIR)/obj -name '*.d' 2>/dev/null)
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)

@@ -332,7 +332,7 @@ SceneInfo render_fit_camera(const Mesh *m, int width, int height)
     double half = fmin(half_fovy, half_fovx);
 
     Vec3 centre;
-    double radius, distance = 0;
+    double radius = 0, distance = 0;
     if (bounding_sphere(m, &centre, &radius)) {
         if (radius == 0)
             radius = 1; /* a single point: any view of it will do */

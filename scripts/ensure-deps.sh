@@ -2,9 +2,21 @@
 # Makes sure the libraries the lessons build against are installed:
 # stb (PNG read/write), cmocka (tests) and pkg-config (to find both).
 # Called by the Makefile before the first compile; a no-op when all are present.
+#
+#   sh scripts/ensure-deps.sh [PROGRAM[:PACKAGE]]...
+#
+# Each PROGRAM named is a tool a make target needs on demand (make
+# compile_commands.json asks for bear): it is installed too, with the Debian
+# package PACKAGE (the program's own name if none is given), when it is not
+# on the PATH.
 set -eu
 
 missing=""
+for need in "$@"; do
+    program=${need%%:*}
+    package=${need#*:}
+    command -v "$program" >/dev/null 2>&1 || missing="$missing $package"
+done
 command -v pkg-config >/dev/null 2>&1 || missing="$missing pkg-config"
 if command -v pkg-config >/dev/null 2>&1; then
     pkg-config --exists stb    || missing="$missing libstb-dev"
@@ -16,8 +28,8 @@ fi
 
 if ! command -v apt-get >/dev/null 2>&1; then
     echo "ensure-deps: missing:$missing" >&2
-    echo "ensure-deps: this system has no apt-get; install these yourself:" >&2
-    echo "ensure-deps:   pkg-config, stb (stb_image.h, stb_image_write.h + pkg-config file 'stb'), cmocka" >&2
+    echo "ensure-deps: this system has no apt-get; install these yourself" >&2
+    echo "ensure-deps: (libstb-dev: stb_image.h, stb_image_write.h and the pkg-config file 'stb')" >&2
     exit 1
 fi
 

@@ -105,7 +105,7 @@ copy() {
     mkdir -p "$tmp/$(dirname "$1")" && cp -R "$1" "$tmp/$1" || die "cannot copy $1"
 }
 
-for f in Makefile README.md .gitignore common scripts tools tests docs lessons; do
+for f in Makefile README.md .gitignore .editorconfig common scripts tools tests docs lessons; do
     if [ -e "$f" ]; then copy "$f"; fi
 done
 rm -rf "$tmp/tests/tools" "$tmp/tests/bench/limit.c"

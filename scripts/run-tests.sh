@@ -2,20 +2,70 @@
 # Runs each cmocka test binary given on the command line, shows its output,
 # and ends with one line over all of them: "N passed, M failed".
 # Exit status 0 only when every test passed and every binary exited cleanly.
+#
+# The binaries run in parallel, TEST_JOBS at a time (the number of cores by
+# default), each into a log of its own. The logs are printed whole, one after
+# the other, in the order of the command line, each as soon as it and the
+# ones before it are done: the report reads as if they had run one by one.
+# The slowest binaries of the last run (their seconds are kept in
+# $TEST_OUTPUT/test-times) start first, so that no long one starts last.
 set -u
+jobs=${TEST_JOBS:-$(nproc 2>/dev/null || getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)}
+case $jobs in
+    ''|*[!0-9]*|0) jobs=1 ;;
+esac
+times_file=${TEST_OUTPUT:-build/test-output}/test-times
+
+work=$(mktemp -d) || exit 1
+trap 'rm -rf "$work"' EXIT
+trap 'exit 130' INT
+trap 'exit 143' TERM
+
+# "<index> <binary>", in the command line's order; then the order they start
+# in: longest last time first, binaries never timed first of all, ties (and
+# the first run) in the command line's order.
+i=0
+for t in "$@"; do
+    i=$((i + 1))
+    echo "$i $t"
+done >"$work/list"
+awk -v times="$times_file" '
+    BEGIN { while ((getline l < times) > 0) { split(l, f, " "); secs[f[2]] = f[1] } }
+    { printf "%d %d %s\n", ($2 in secs) ? secs[$2] : 1000000, $1, $2 }' "$work/list" |
+    sort -s -k1,1nr | cut -d' ' -f2- >"$work/start"
+
+# One binary: its output into <index>.log, its exit status into <index>.status
+# (written last, by a rename: it says the log is complete), its seconds.
+# shellcheck disable=SC2016 # expanded by the inner sh
+[ $# -gt 0 ] && xargs -n 2 -P "$jobs" sh -c '
+    start=$(date +%s)
+    "$2" >"$0/$1.log" 2>&1
+    echo $? >"$0/$1.status.tmp"
+    echo "$(($(date +%s) - start)) $2" >"$0/$1.time"
+    mv "$0/$1.status.tmp" "$0/$1.status"' "$work" <"$work/start" &
+runner=$!
+
 passed=0
 failed=0
 broken=""
+i=0
 for t in "$@"; do
-    log=$(mktemp)
-    "$t" >"$log" 2>&1
-    status=$?
-    cat "$log"
+    i=$((i + 1))
+    while [ ! -f "$work/$i.status" ]; do
+        kill -0 "$runner" 2>/dev/null || [ -f "$work/$i.status" ] || {
+            echo "run-tests: $t did not run" >&2
+            break
+        }
+        sleep 0.1 2>/dev/null || sleep 1
+    done
+    log="$work/$i.log"
+    status=$(cat "$work/$i.status" 2>/dev/null || echo 127)
+    [ -f "$log" ] && cat "$log"
+    [ -f "$log" ] || : >"$log"
     # After a failure: the function each failed test checks, the diff pictures.
     if [ "$status" -ne 0 ]; then sh scripts/test-hints.sh "$t" "$log"; fi
     p=$(sed -n 's/^\[  PASSED  \] \([0-9][0-9]*\) test(s)\.$/\1/p' "$log" | awk '{s+=$1} END {print s+0}')
     f=$(sed -n 's/^\[  FAILED  \] \([0-9][0-9]*\) test(s), listed below:$/\1/p' "$log" | awk '{s+=$1} END {print s+0}')
-    rm -f "$log"
     passed=$((passed + p))
     failed=$((failed + f))
     # A binary that crashed, or failed without cmocka counting it, still fails the run.
@@ -24,6 +74,18 @@ for t in "$@"; do
         broken="$broken $t(exit $status)"
     fi
 done
+wait "$runner"
+
+# This run's seconds replace the last ones of the same binaries.
+if [ -d "$(dirname "$times_file")" ] || mkdir -p "$(dirname "$times_file")" 2>/dev/null; then
+    cat "$work"/*.time 2>/dev/null >"$work/new-times"
+    { cat "$work/new-times"
+      [ -f "$times_file" ] && awk 'NR == FNR { seen[$2] = 1; next } !($2 in seen)' \
+          "$work/new-times" "$times_file"
+    } >"$work/all-times"
+    mv "$work/all-times" "$times_file" 2>/dev/null || true
+fi
+
 [ -n "$broken" ] && echo "broken test binaries:$broken"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ] && [ "$passed" -gt 0 ]

@@ -175,7 +175,7 @@ static void summary_agrees_with_the_written_files(void **state)
     }
     expect_count(tested, sum, "fragments in the overdraw picture");
     expect_count(covered, nonzero, "covered pixels in the overdraw picture");
-    assert_true(fabs(average - (double)tested / covered) < 0.006);
+    assert_true(fabs(average - (double)tested / (double)covered) < 0.006);
     free(over);
 
     float *depth;

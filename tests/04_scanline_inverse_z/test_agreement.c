@@ -83,7 +83,7 @@ static void expect_agreement(const char *what, const char *const *source)
             }
         }
     printf("  %-16s %ld of %ld pixels show another face than %s (%.3f%%), %ld off polygon "
-           "edges\n", what, differing, total, REFERENCE, 100.0 * differing / total, off_edge);
+           "edges\n", what, differing, total, REFERENCE, 100.0 * (double)differing / (double)total, off_edge);
     if (off_edge)
         fail_msg("%s: pixel (%d,%d) shows face %d here but face %d in %s, away from any edge",
                  what, off_x, off_y, face_at(&ours, off_x, off_y), face_at(&ref, off_x, off_y),

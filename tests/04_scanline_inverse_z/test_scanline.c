@@ -654,7 +654,7 @@ static void coverage_equals_the_edge_function_rule(void **state)
         for (int i = 0; i < n; i++) {
             p[i][0] = llround((cx + r * cos(angles[i])) * 256);
             p[i][1] = llround((cy + r * sin(angles[i])) * 256);
-            v[i] = sv(p[i][0] / 256.0, p[i][1] / 256.0, 2);
+            v[i] = sv((double)p[i][0] / 256.0, (double)p[i][1] / 256.0, 2);
         }
         /* Keep only polygons that stayed strictly convex after snapping. */
         int winding = 0;

@@ -166,7 +166,7 @@ static void record_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
     drawn_order[drawn_count++] = f->face;
     int x = (int)f->v[0].x, y = (int)f->v[0].y;
     if (x >= 0 && y >= 0 && x < t->width && y < t->height) {
-        size_t i = (size_t)y * t->width + x;
+        size_t i = (size_t)y * (size_t)t->width + (size_t)x;
         target_record(t, i, f->face, (float)f->v[0].d, t->depth[i], true);
         t->depth[i] = (float)(1 / f->v[0].d); /* stores 1/d, as lesson 04 does */
         t->face[i] = f->face;

@@ -168,13 +168,13 @@ static size_t put_utf8(char *buf, uint32_t u)
 /* A \u escape, with its second half if it is the first of a surrogate pair. */
 static bool parse_unicode_escape(Parser *p, uint32_t *out)
 {
-    uint32_t u;
+    uint32_t u = 0;
     if (!parse_hex4(p, &u))
         return false;
     if (u >= 0xDC00 && u <= 0xDFFF)
         return fail_at(p, "a lone second half of a surrogate pair");
     if (u >= 0xD800 && u <= 0xDBFF) {
-        uint32_t low;
+        uint32_t low = 0;
         if (peek(p) != '\\' || p->pos + 1 >= p->len || p->text[p->pos + 1] != 'u')
             return fail_at(p, "the first half of a surrogate pair without its second half");
         p->pos += 2;
