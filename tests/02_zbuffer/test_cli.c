@@ -153,7 +153,7 @@ static void summary_agrees_with_the_written_files(void **state)
                       "%lf over %ld covered pixels", &tested, &passed, &failed, &average,
                &covered) != 5)
         fail_msg("second line of the summary not understood:\n%s", line2);
-    expect_count(passed + failed, tested, "fragments tested (passed + failed)");
+    expect_count((long)(passed + failed), (long)tested, "fragments tested (passed + failed)");
     for (int k = 0; k < 3; k++) {
         const char *path = k == 0 ? png : k == 1 ? pfm : pgm;
         char wrote[4200];
@@ -173,7 +173,7 @@ static void summary_agrees_with_the_written_files(void **state)
         sum += over[i];
         nonzero += over[i] > 0;
     }
-    expect_count(tested, sum, "fragments in the overdraw picture");
+    expect_count((long)tested, (long)sum, "fragments in the overdraw picture");
     expect_count(covered, nonzero, "covered pixels in the overdraw picture");
     assert_true(fabs(average - (double)tested / (double)covered) < 0.006);
     free(over);

@@ -31,12 +31,15 @@ int32_t face_at(const Image *id_picture, int x, int y);
 int32_t target_face_at(const Target *t, int x, int y);
 float target_depth_at(const Target *t, int x, int y);
 
-/* expect_count(expected, actual, what): "what: expected 9226, got 9230". */
-#define expect_count(...) expect_count_at(__VA_ARGS__, __FILE__, __LINE__)
+/* expect_count(expected, actual, what): "what: expected 9226, got 9230".
+ * Counts of any integer type (uint64_t fragment counts too) are compared as long. */
+#define expect_count(e, a, what) expect_count_at((long)(e), (long)(a), (what), __FILE__, __LINE__)
 /* expect_at_least(least, actual, what): "what: expected at least 1, got 0". */
-#define expect_at_least(...) expect_at_least_at(__VA_ARGS__, __FILE__, __LINE__)
+#define expect_at_least(e, a, what) \
+    expect_at_least_at((long)(e), (long)(a), (what), __FILE__, __LINE__)
 /* expect_at_most(most, actual, what): "what: expected at most 9, got 12". */
-#define expect_at_most(...) expect_at_most_at(__VA_ARGS__, __FILE__, __LINE__)
+#define expect_at_most(e, a, what) \
+    expect_at_most_at((long)(e), (long)(a), (what), __FILE__, __LINE__)
 
 /* expect_colour(expected, actual, what):
  * "what: expected rgb 255,0,0, got rgb 0,0,3". */
