@@ -3,8 +3,9 @@
 #
 # Per lesson:
 #   reading path  main.c, the taught files (every other file at the top of the
-#                 lesson directory: raster.h, raster.c, ...), then the headers
-#                 they include directly, of the lesson (extras/extras.h) or of
+#                 lesson directory, raster.h, raster.c, ..., but those carried
+#                 unchanged from the lesson before), then the headers they
+#                 include directly, of the lesson (extras/extras.h) or of
 #                 common/, each once, in the order first included. Lines are
 #                 counted as the files stand, comments and markers included.
 #   solution      lines inside SOLUTION BEGIN/END regions (make handout's stubs
@@ -19,13 +20,27 @@ set -eu
 tsv=0
 [ "${1:-}" = "--tsv" ] && tsv=1
 regions=scripts/solution-regions.awk
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
 
-# The reading path of lesson directory $1, one file per line.
+# True when file $1 reads the same (solution markers aside) as file $2.
+same_as() {
+    [ -f "$2" ] || return 1
+    awk -v mode=clean -f "$regions" "$1" >"$tmp/a" && awk -v mode=clean -f "$regions" "$2" >"$tmp/b" &&
+        cmp -s "$tmp/a" "$tmp/b"
+}
+
+# The reading path of lesson directory $1 (whose predecessor is $2, or
+# nothing), one file per line. A file the lesson carries unchanged from its
+# predecessor is not taught again: it is on the path only if a taught file
+# includes it.
 reading_path() {
-    dir=$1
+    dir=$1 prev=$2
     start="$dir/main.c"
     for f in "$dir"/*.h "$dir"/*.c; do
-        [ -f "$f" ] && [ "$f" != "$dir/main.c" ] && start="$start $f"
+        [ -f "$f" ] && [ "$f" != "$dir/main.c" ] || continue
+        [ -n "$prev" ] && same_as "$f" "$prev/${f##*/}" && continue
+        start="$start $f"
     done
     # shellcheck disable=SC2086
     awk -v dir="$dir" '
@@ -56,10 +71,12 @@ solution_lines() {
 lessons=$(ls -d lessons/[0-9][0-9]_* | sort)
 set -- $lessons
 [ "$tsv" -eq 1 ] || printf '%-24s %5s %6s %6s %8s  %s\n' lesson files lines main.c solution "diff to next"
+prev=""
 while [ $# -gt 0 ]; do
     dir=$1; shift
     name=${dir#lessons/}
-    path=$(reading_path "$dir")
+    path=$(reading_path "$dir" "$prev")
+    prev=$dir
     files=$(echo "$path" | grep -c .)
     total=0
     for f in $path; do total=$((total + $(lines_of "$f"))); done
