@@ -132,7 +132,9 @@ run: $(BINS)
 	    echo "== $$l"; $(BUILD)/bin/$$l; done
 
 # Every test runs from the top of the tree, with BIN_DIR naming the lessons'
-# executables; scripts/run-tests.sh prints the final "N passed, M failed".
+# executables; scripts/run-tests.sh runs the binaries in parallel (TEST_JOBS
+# at a time, the number of cores by default), prints their outputs whole and
+# in order, and the final "N passed, M failed".
 test: $(BINS) $(TOOLS) $(TEST_BIN)
 	@BIN_DIR=$(BUILD)/bin TOOL_DIR=$(BUILD)/tools TEST_OUTPUT=$(BUILD)/test-output \
 	    sh scripts/run-tests.sh $(TEST_BIN)
@@ -235,7 +237,8 @@ valgrind: $(BINS)
 #   make grade [LESSON=NN] [TEST=name] [TIME_LIMIT=seconds]
 #       runs the lessons' tests, each under a time limit (10 s by default),
 #       prints a score table with the points of tests/<lesson>/points.txt and
-#       writes $(BUILD)/grade/results.json in Gradescope's format. TEST=name
+#       writes $(BUILD)/grade/results.json in Gradescope's format (the test
+#       programs run GRADE_JOBS at a time, the number of cores by default). TEST=name
 #       grades one test; the exit status then says if it passed.
 GRADE_LESSONS := $(if $(LESSON),$(filter $(LESSON)%,$(LESSONS)),$(LESSONS))
 GRADE_TESTS   := $(patsubst tests/%.c,$(BUILD)/tests/%,\

@@ -48,6 +48,10 @@ fi
 case $limit in
     ''|*[!0-9]*|0) echo "$prog: error: TIME_LIMIT=$limit: want a whole number of seconds, at least 1" >&2; exit 2 ;;
 esac
+jobs=${GRADE_JOBS:-$(nproc 2>/dev/null || getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)}
+case $jobs in
+    ''|*[!0-9]*|0) jobs=1 ;;
+esac
 # A whole binary may take as long as a few of its tests: it only decides how
 # soon the tests it did not finish are run one by one.
 binary_limit=$((limit * 3))
@@ -180,10 +184,13 @@ for lesson in "$@"; do
         mv "$ldir/points.one" "$ldir/points"
     fi
 
-    # Phase 1: every binary whole.
+    # Phase 1: every binary whole, GRADE_JOBS at a time (the number of cores
+    # by default, as make test), each under its own time limit; then their
+    # logs are read one by one, in the same order as ever.
     : >"$ldir/results"     # test <tab> pass|fail|skip <tab> binary
     : >"$ldir/unfinished"  # test <tab> binary <tab> status
     : >"$ldir/incomplete"  # binary <tab> status: binaries that did not finish
+    : >"$ldir/whole"       # the binaries phase 1 runs
     missing=""
     for src in tests/"$lesson"/test_*.c; do
         [ -f "$src" ] || continue
@@ -197,8 +204,15 @@ for lesson in "$@"; do
             printf '%s\t-\n' "$bin" >>"$ldir/incomplete" # phase 2 runs the one test
             continue
         fi
-        TEST_FILTER='' "$time_limit" "$binary_limit" "$exe" >"$ldir/$bin.log" 2>&1
-        st=$?
+        echo "$bin" >>"$ldir/whole"
+    done
+    # shellcheck disable=SC2016 # expanded by the inner sh
+    [ -s "$ldir/whole" ] && xargs -n 1 -P "$jobs" sh -c '
+        TEST_FILTER="" "$0" "$1" "$2/$4" >"$3/$4.log" 2>&1
+        echo $? >"$3/$4.status"' "$time_limit" "$binary_limit" "$build/tests/$lesson" "$ldir" \
+        <"$ldir/whole"
+    while read -r bin; do
+        st=$(cat "$ldir/$bin.status" 2>/dev/null || echo 127)
         parse_log "$ldir/$bin.log" "$ldir/out/$bin" >"$ldir/$bin.parsed"
         awk -F '\t' -v bin="$bin" -v st="$st" '
             $1 == "R" { printf "%s\t%s\t%s\n", $2, $3, bin >> results }
@@ -207,7 +221,7 @@ for lesson in "$@"; do
             END { if (!done || st >= 124) printf "%s\t%s\n", bin, st >> incomplete }' \
             results="$ldir/results" unfinished="$ldir/unfinished" incomplete="$ldir/incomplete" \
             "$ldir/$bin.parsed"
-    done
+    done <"$ldir/whole"
 
     # Phase 2: each listed test without a result, alone, in each binary that
     # did not finish, until one has it.
