@@ -36,12 +36,8 @@ override REQUIRED_LDLIBS   := -lm
 # What make sanitize and make fuzz add to every compile and link.
 MODE_CFLAGS :=
 
-# lessons/ do not pass every warning above yet: these are shown, not errors,
-# in lessons/ only (tools/, common/ and tests/ have none). Remove an entry
-# once no lesson has that warning.
-LESSON_WARN_NOT_ERROR := -Wno-error=sign-conversion
-# The flags of the file $< (lessons/ or not), in every compile rule.
-warn_of = $(REQUIRED_CFLAGS)$(if $(filter lessons/%,$(1)), $(LESSON_WARN_NOT_ERROR))
+# The flags of the file $< in every compile rule (the same for every file).
+warn_of = $(REQUIRED_CFLAGS)
 
 # Every compile and link; OBJ_INCLUDES is per object (see the tests' objects).
 COMPILE = $(CC) $(REQUIRED_CPPFLAGS) $(OBJ_INCLUDES) $(CPPFLAGS) \
