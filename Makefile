@@ -209,7 +209,8 @@ fuzz:
 fuzz-build: $(FUZZ_RUN:%=$(BUILD)/fuzz/fuzz_%)
 
 # ($* is the stem of the object rule: tests/fuzz/fuzz_<name>)
-$(BUILD)/obj/tests/fuzz/fuzz_%.o: OBJ_INCLUDES += -Ilessons/$(patsubst tests/fuzz/fuzz_%,%,$*)
+$(BUILD)/obj/tests/fuzz/fuzz_%.o: OBJ_INCLUDES += -Ilessons/$(patsubst tests/fuzz/fuzz_%,%,$*) \
+                                             -Ilessons/$(patsubst tests/fuzz/fuzz_%,%,$*)/extras
 $(BUILD)/fuzz/fuzz_%: $(BUILD)/obj/tests/fuzz/fuzz_%.o $(COMMON_OBJ) $$(call lesson_objs,$$*)
 	@mkdir -p $(@D)
 	$(LINK) -fsanitize=fuzzer $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)

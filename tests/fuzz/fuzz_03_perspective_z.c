@@ -4,6 +4,7 @@
  * naive rule (--depth-interp naive) and with the negated-w bug (--bug). See
  * fuzz_raster.h. */
 #include "bugs.h"
+#include "naive.h"
 #include "raster.h"
 
 #include "fuzz_raster.h"
