@@ -2,7 +2,8 @@
 #
 #   make                  build every lesson into build/bin/
 #   make run              build and run every lesson in order (pictures in out/)
-#   make test             build and run every test; LESSON=03 runs one lesson's
+#   make test             build and run every test; LESSON=03 runs one lesson's,
+#                         TEST=name only the tests of that name (* and ? work)
 #   make update-expected LESSON=NN   accept the current pictures of lesson NN's tests
 #   make diff FROM=02 TO=03   what lesson 03 changes in lesson 02's code
 #   make reading          per lesson: the files a reader opens, the solution
@@ -131,8 +132,10 @@ run: $(BINS)
 # executables; scripts/run-tests.sh runs the binaries in parallel (TEST_JOBS
 # at a time, the number of cores by default), prints their outputs whole and
 # in order, and the final "N passed, M failed".
+# TEST=name becomes TEST_FILTER, which every test binary hands to cmocka's
+# test filter (tests/support/test_hooks.c): only the tests of that name run.
 test: $(BINS) $(TOOLS) $(TEST_BIN)
-	@BIN_DIR=$(BUILD)/bin TOOL_DIR=$(BUILD)/tools TEST_OUTPUT=$(BUILD)/test-output \
+	@TEST_FILTER='$(TEST)' BIN_DIR=$(BUILD)/bin TOOL_DIR=$(BUILD)/tools TEST_OUTPUT=$(BUILD)/test-output \
 	    sh scripts/run-tests.sh $(TEST_BIN)
 
 update-expected: $(BINS) $(TOOLS) $(TEST_BIN)
