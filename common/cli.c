@@ -35,7 +35,7 @@ typedef enum {
     FLAG_SCENE, FLAG_OBJ,
     FLAG_EYE, FLAG_TARGET, FLAG_UP, FLAG_FOVY, FLAG_NEAR, FLAG_FAR,
     FLAG_SHADE, FLAG_DEPTH_OUT, FLAG_OVERDRAW_OUT, FLAG_TRACE, FLAG_ASCII,
-    FLAG_COMPARE, FLAG_STEPS,
+    FLAG_COMPARE, FLAG_STEPS, FLAG_WORLD_OUT,
     FLAG_HELP, FLAG_VERSION,
     SHARED_FLAG_COUNT
 } SharedFlagId;
@@ -86,6 +86,9 @@ static const SharedFlag SHARED_FLAGS[SHARED_FLAG_COUNT] = {
                               "picture goes next to --out as NAME.diff.png"},
     [FLAG_STEPS] = {.flag = "--steps", .group = CLI_STEPS, .metavar = "DIR",
                     .help = "save step_NNNN.png and step_NNNN_depth.png into DIR after every face"},
+    [FLAG_WORLD_OUT] = {.flag = "--world-out", .group = CLI_WORLD_OUT, .metavar = "FILE.png",
+                        .help = "also draw the camera, its frustum and the scene from the side "
+                                "and from above (804 x 416)"},
     [FLAG_HELP] = {.flag = "--help", .group = 0, .metavar = NULL,
                    .help = "print this help and exit"},
     [FLAG_VERSION] = {.flag = "--version", .group = 0, .metavar = NULL,
@@ -105,6 +108,7 @@ static const char *group_reason(unsigned group)
     case CLI_ASCII: return "it prints no text picture";
     case CLI_COMPARE: return "it compares no pictures";
     case CLI_STEPS: return "it saves no steps";
+    case CLI_WORLD_OUT: return "it draws no 3-D world";
     default: return "see --help";
     }
 }
@@ -389,6 +393,7 @@ static bool apply_shared_flag(Parser *p, SharedFlagId id, const char *value)
     case FLAG_ASCII: o->ascii = true; return true;
     case FLAG_COMPARE: return set_path(flag, value, "file", &o->compare, err);
     case FLAG_STEPS: return set_path(flag, value, "directory", &o->steps_dir, err);
+    case FLAG_WORLD_OUT: return set_path(flag, value, "file", &o->world_out, err);
     case FLAG_HELP: case FLAG_VERSION: case SHARED_FLAG_COUNT: break;
     }
     return true;
@@ -455,14 +460,14 @@ static bool check_compare(Parser *p)
  * diff picture --compare writes beside --out counts as an output too. */
 static bool check_paths(Parser *p)
 {
-    enum { FIRST_OUTPUT = 2, DIFF = 5, PATH_COUNT = 6 };
+    enum { FIRST_OUTPUT = 2, DIFF = 6, PATH_COUNT = 7 };
     const Options *o = p->opt;
     char diff[PATH_TEXT_MAX];
     bool has_diff = o->compare && o->out && compare_diff_path(o->out, diff, sizeof diff);
     const char *name[PATH_COUNT] = {"--obj", "--compare", "--out", "--depth-out",
-                                    "--overdraw-out", "the diff picture of --out"};
+                                    "--overdraw-out", "--world-out", "the diff picture of --out"};
     const char *path[PATH_COUNT] = {o->obj, o->compare, o->out, o->depth_out, o->overdraw_out,
-                                    has_diff ? diff : NULL};
+                                    o->world_out, has_diff ? diff : NULL};
     for (int j = FIRST_OUTPUT; j < PATH_COUNT; j++)
         for (int i = 0; i < j; i++)
             if (path[i] && path[j] &&

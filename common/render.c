@@ -7,6 +7,7 @@
 
 #include "file.h"
 #include "shade.h"
+#include "world_view.h"
 
 /* render_fit_camera: the view of an OBJ model. */
 #define FIT_FOVY 40.0
@@ -259,6 +260,9 @@ bool render_write(const Render *r, const Target *t, const Rasterizer *rz, const 
         !(make_parent_dirs(opt->overdraw_out, err) &&
           write_pgm16(t->overdraw, t->width, t->height, opt->overdraw_out, err)))
         return false;
+    if (opt->world_out && !(make_parent_dirs(opt->world_out, err) &&
+                            world_view_write(&r->mesh, &r->camera, opt->world_out, err)))
+        return false;
     return true;
 }
 
@@ -299,7 +303,7 @@ void render_print_summary(FILE *out, const char *program, const Render *r, const
     else
         fprintf(out, "no pixel covered\n");
 
-    const char *written[] = {opt->out, opt->depth_out, opt->overdraw_out};
+    const char *written[] = {opt->out, opt->depth_out, opt->overdraw_out, opt->world_out};
     for (size_t k = 0; k < sizeof written / sizeof written[0]; k++)
         if (written[k])
             fprintf(out, "  wrote %s\n", written[k]);

@@ -7,6 +7,8 @@ cd "$(dirname "$0")/.."
 build=${1:-build}
 images=docs/images
 mkdir -p "$images"
+# Where a render goes that only its --world-out picture is wanted from.
+tmp_out="$build/doc-images-render.png"
 
 # ---- 01_ybuffer: render, y-buffer strip, the world from above, the steps, another order
 make -s BUILD="$build" "$build/bin/01_ybuffer"
@@ -29,6 +31,8 @@ size="--width 400 --height 300"
        --out "$images/02_bug_separate_buffers.png" >/dev/null
 "$l02" $size --bug clear-zero --out "$images/02_bug_clear_zero.png" >/dev/null
 "$l02" --scene cubes --out "$images/02_cubes.png" >/dev/null
+# The camera, its frustum and triangles3 from the side and from above
+"$l02" --out "$tmp_out" --world-out "$images/02_world.png" >/dev/null
 # Two triangles sharing the edge from pixel centre (1.5, 0.5) to (10.5, 6.5) of
 # a 12 x 8 screen: seen from (0, 0, 1) with fovy 90, the plane z = 0 maps to
 # the screen by x_s = 4 x + 6, y_s = 4 - 4 y.
@@ -57,6 +61,8 @@ size="--width 400 --height 300"
 "$l03" $size --out "$images/03_grazing.png" \
        --compare-naive "$images/03_grazing_compare.png" >/dev/null
 "$l03" $size --depth-interp naive --out "$images/03_grazing_naive.png" >/dev/null
+# The two strips from the side and from above, stretched vertically to read
+"$l03" --out "$tmp_out" --world-out "$images/03_grazing_world.png" >/dev/null
 "$l03" $size --scene cubes --out "$images/03_cubes.png" \
        --compare-naive "$images/03_cubes_compare.png" >/dev/null
 "$l03" $size --scene interpenetrate --out "$images/03_interpenetrate.png" \

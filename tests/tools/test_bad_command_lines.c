@@ -128,6 +128,11 @@ static const BadLine BAD_LINES[] = {
     {ALL_3D, {"--steps", "{D}/file.txt"}, 1,
      "cannot create directory {D}/file.txt: a file of that name exists"},
     {ALL_3D, {"--compare", "{D}/out.png"}, 2, "--compare and --out both name {D}/out.png"},
+    {ALL_3D, {"--world-out", "{D}/out.png"}, 2, "--out and --world-out both name {D}/out.png"},
+    {ALL_3D, {"--obj", "{D}/m.obj", "--world-out", "{D}/m.obj"}, 2,
+     "--obj and --world-out both name {D}/m.obj"},
+    {ALL_3D, {"--depth-out", "{D}/w.png", "--world-out", "{D}/w.png"}, 2,
+     "--depth-out and --world-out both name {D}/w.png"},
     {ALL_3D, {"--compare", "{D}/m.obj", "--depth-out", "{D}/out.diff.png"}, 2,
      "--depth-out names {D}/out.diff.png, where the diff picture of --out goes"},
 
@@ -156,6 +161,8 @@ static const BadLine BAD_LINES[] = {
      "--out and --compare-naive both name {D}/out.png"},
     {"03_perspective_z", {"--obj", "{D}/m.obj", "--compare-naive", "{D}/m.obj"}, 2,
      "--obj and --compare-naive both name {D}/m.obj"},
+    {"03_perspective_z", {"--world-out", "{D}/w.png", "--compare-naive", "{D}/w.png"}, 2,
+     "--world-out and --compare-naive both name {D}/w.png"},
     /* the naive comparison is lesson 03's extra: lesson 04 does not carry it */
     {"04_scanline_inverse_z", {"--depth-interp", "x"}, 2,
      "unknown flag '--depth-interp' (try --help)"},
@@ -171,6 +178,8 @@ static const BadLine BAD_LINES[] = {
      "--obj does not apply to 01_ybuffer (it draws its own scene only)"},
     {"01_ybuffer", {"--depth-out", "{D}/d.pfm"}, 2,
      "--depth-out does not apply to 01_ybuffer (it writes no depth buffer)"},
+    {"01_ybuffer", {"--world-out", "{D}/w.png"}, 2,
+     "--world-out does not apply to 01_ybuffer (it draws no 3-D world)"},
     {"01_ybuffer", {"--trace", "800"}, 2, "--trace: column 800 is outside the 800-pixel-wide image"},
     {"01_ybuffer", {"--order", "12"}, 2,
      "--order '12': expected each of 1..3 exactly once, as digits (e.g. 312) or separated by "
