@@ -188,7 +188,7 @@ static void summary_agrees_with_the_written_files(void **state)
 }
 
 /* An OBJ of one square facing +Z, coloured by its .mtl: --obj frames it, so
- * the centre pixel shows it; --shade id gives it id 1; flat keeps Kd's hue. */
+ * the centre pixel shows it; --id-out gives it id 1; flat keeps Kd's hue. */
 static void obj_file_is_framed_and_coloured(void **state)
 {
     (void)state;
@@ -205,8 +205,8 @@ static void obj_file_is_framed_and_coloured(void **state)
     fclose(f);
 
     const char *id_png = path_join(dir, "id.png"), *flat_png = path_join(dir, "flat.png");
-    const char *a1[] = {"--obj", obj, "--shade", "id", "--width", "64", "--height", "48",
-                        "--out", id_png, NULL};
+    const char *a1[] = {"--obj", obj, "--id-out", id_png, "--width", "64", "--height", "48",
+                        "--out", path_join(dir, "picture.png"), NULL};
     Image im;
     render_to_image(a1, id_png, &im);
     expect_face_at(&im, 32, 24, 0, "");

@@ -304,19 +304,22 @@ static void outputs_are_written_into_new_directories(void **state)
     assert_true(render_target_init(&t, &RECORDER, 8, 8, &err));
     assert_true(render_faces(&r, &t, &RECORDER, NULL, 0, NULL, NULL, &err));
     const char *dir = test_dir("render_outputs");
-    char png[512], pfm[512], pgm[512];
+    char png[512], pfm[512], pgm[512], ids[512];
     snprintf(png, sizeof png, "%s/a/b/pic.png", dir);
+    snprintf(ids, sizeof ids, "%s/d/ids.png", dir);
     snprintf(pfm, sizeof pfm, "%s/c/depth.pfm", dir);
     snprintf(pgm, sizeof pgm, "%s/over.pgm", dir);
     Options opt = {0};
     opt.out = png;
     opt.depth_out = pfm;
     opt.overdraw_out = pgm;
-    opt.shade = SHADE_ID;
+    opt.id_out = ids;
+    opt.shade = SHADE_FLAT;
     if (!render_write(&r, &t, &RECORDER, &opt, &err))
         fail_msg("render_write: %s", err.msg);
     Image im;
-    assert_true(image_read_png(&im, png, &err));
+    assert_true(file_exists(png));
+    assert_true(image_read_png(&im, ids, &err));
     expect_face_at(&im, 4, 4, 0, "");
     expect_face_at(&im, 0, 0, NO_FACE, "");
     image_free(&im);
@@ -326,7 +329,7 @@ static void outputs_are_written_into_new_directories(void **state)
     char bad[600];
     snprintf(bad, sizeof bad, "%s/nested/x.png", pgm);
     opt.out = bad;
-    opt.depth_out = opt.overdraw_out = NULL;
+    opt.depth_out = opt.overdraw_out = opt.id_out = NULL;
     assert_false(render_write(&r, &t, &RECORDER, &opt, &err));
     assert_true(strlen(err.msg) > 0);
     assert_false(file_exists(bad));
