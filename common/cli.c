@@ -34,7 +34,7 @@ typedef enum {
     FLAG_OUT, FLAG_WIDTH, FLAG_HEIGHT,
     FLAG_SCENE, FLAG_OBJ,
     FLAG_EYE, FLAG_TARGET, FLAG_UP, FLAG_FOVY, FLAG_NEAR, FLAG_FAR,
-    FLAG_SHADE, FLAG_DEPTH_OUT, FLAG_OVERDRAW_OUT, FLAG_TRACE, FLAG_ASCII,
+    FLAG_SHADE, FLAG_DEPTH_OUT, FLAG_ID_OUT, FLAG_OVERDRAW_OUT, FLAG_TRACE, FLAG_ASCII,
     FLAG_COMPARE, FLAG_STEPS, FLAG_WORLD_OUT,
     FLAG_HELP, FLAG_VERSION,
     SHARED_FLAG_COUNT
@@ -71,9 +71,11 @@ static const SharedFlag SHARED_FLAGS[SHARED_FLAG_COUNT] = {
     [FLAG_FAR] = {.flag = "--far", .group = CLI_CAMERA, .metavar = "F",
                   .help = "distance of the far plane, beyond the near one"},
     [FLAG_SHADE] = {.flag = "--shade", .group = CLI_SHADE, .metavar = "MODE",
-                    .help = "flat, id (face index + 1) or depth"},
+                    .help = "flat, id (a distinct colour per face) or depth (greys, near bright)"},
     [FLAG_DEPTH_OUT] = {.flag = "--depth-out", .group = CLI_DEPTH_OUT, .metavar = "FILE.pfm",
                         .help = "also write the depth buffer, as view depth d"},
+    [FLAG_ID_OUT] = {.flag = "--id-out", .group = CLI_ID_OUT, .metavar = "FILE.png",
+                     .help = "also write each pixel's face index + 1, as 24-bit RGB"},
     [FLAG_OVERDRAW_OUT] = {.flag = "--overdraw-out", .group = CLI_OVERDRAW_OUT,
                            .metavar = "FILE.pgm",
                            .help = "also write how many fragments each pixel tested"},
@@ -103,6 +105,7 @@ static const char *group_reason(unsigned group)
     case CLI_CAMERA: return "it has no camera";
     case CLI_SHADE: return "it has one way of shading";
     case CLI_DEPTH_OUT: return "it writes no depth buffer";
+    case CLI_ID_OUT: return "it has no faces";
     case CLI_OVERDRAW_OUT: return "it counts no overdraw";
     case CLI_TRACE: return "it traces no pixel";
     case CLI_ASCII: return "it prints no text picture";
@@ -388,6 +391,7 @@ static bool apply_shared_flag(Parser *p, SharedFlagId id, const char *value)
     case FLAG_FAR: return set_double(flag, value, &o->far, &o->far_set, err);
     case FLAG_SHADE: return set_shade(p, value);
     case FLAG_DEPTH_OUT: return set_path(flag, value, "file", &o->depth_out, err);
+    case FLAG_ID_OUT: return set_path(flag, value, "file", &o->id_out, err);
     case FLAG_OVERDRAW_OUT: return set_path(flag, value, "file", &o->overdraw_out, err);
     case FLAG_TRACE: return set_trace(p, value);
     case FLAG_ASCII: o->ascii = true; return true;
@@ -460,14 +464,15 @@ static bool check_compare(Parser *p)
  * diff picture --compare writes beside --out counts as an output too. */
 static bool check_paths(Parser *p)
 {
-    enum { FIRST_OUTPUT = 2, DIFF = 6, PATH_COUNT = 7 };
+    enum { FIRST_OUTPUT = 2, DIFF = 7, PATH_COUNT = 8 };
     const Options *o = p->opt;
     char diff[PATH_TEXT_MAX];
     bool has_diff = o->compare && o->out && compare_diff_path(o->out, diff, sizeof diff);
     const char *name[PATH_COUNT] = {"--obj", "--compare", "--out", "--depth-out",
-                                    "--overdraw-out", "--world-out", "the diff picture of --out"};
+                                    "--overdraw-out", "--id-out", "--world-out",
+                                    "the diff picture of --out"};
     const char *path[PATH_COUNT] = {o->obj, o->compare, o->out, o->depth_out, o->overdraw_out,
-                                    o->world_out, has_diff ? diff : NULL};
+                                    o->id_out, o->world_out, has_diff ? diff : NULL};
     for (int j = FIRST_OUTPUT; j < PATH_COUNT; j++)
         for (int i = 0; i < j; i++)
             if (path[i] && path[j] &&

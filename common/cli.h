@@ -5,7 +5,7 @@
  *   --scene NAME | --obj FILE.obj
  *   --eye X,Y,Z  --target X,Y,Z  --up X,Y,Z  --fovy DEG  --near N  --far F
  *   --shade flat|id|depth
- *   --depth-out FILE.pfm  --overdraw-out FILE.pgm  --world-out FILE.png
+ *   --depth-out FILE.pfm  --overdraw-out FILE.pgm  --id-out FILE.png  --world-out FILE.png
  *   --trace X,Y  --ascii  --compare REF.png  --steps DIR
  *   --help  --version
  *
@@ -40,7 +40,8 @@ enum {
     CLI_COMPARE = 1 << 7,      /* --compare REF.png */
     CLI_STEPS = 1 << 8,        /* --steps DIR */
     CLI_WORLD_OUT = 1 << 9,    /* --world-out */
-    CLI_ALL_3D = 0x3ff
+    CLI_ID_OUT = 1 << 10,      /* --id-out */
+    CLI_ALL_3D = 0x7ff
 };
 
 /* A flag of one lesson's own, e.g. {"--painter", NULL, "draw back to front, no depth buffer"}. */
@@ -61,6 +62,7 @@ typedef struct {
     ShadeMode shade;
     const char *depth_out, *overdraw_out;
     const char *world_out; /* the scene from the side and from above (world_view.h) */
+    const char *id_out; /* --id-out: face index + 1 per pixel (shade.h face_id_colour) */
     bool trace_set;
     int trace_x, trace_y; /* lesson 01 takes --trace X alone: trace_y = 0 */
     bool ascii;

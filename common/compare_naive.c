@@ -18,9 +18,9 @@ static bool same_path(const char *a, const char *b)
 bool compare_naive_path_ok(const Options *opt, const char *path, Error *err)
 {
     const char *name[] = {"--obj", "--compare", "--out", "--depth-out", "--overdraw-out",
-                          "--world-out"};
+                          "--id-out", "--world-out"};
     const char *other[] = {opt->obj, opt->compare, opt->out, opt->depth_out, opt->overdraw_out,
-                           opt->world_out};
+                           opt->id_out, opt->world_out};
     for (size_t i = 0; i < sizeof name / sizeof name[0]; i++)
         if (same_path(other[i], path))
             return error_set(err, "%s and --compare-naive both name %s", name[i], path);

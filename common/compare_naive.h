@@ -13,7 +13,7 @@
 
 
 /* The picture may not replace an input or another output (--obj, --compare,
- * --out, --depth-out, --overdraw-out, the diff picture of --compare): false
+ * --out, --depth-out, --overdraw-out, --id-out, the diff picture of --compare): false
  * with err set when path names one of them, a usage error. */
 bool compare_naive_path_ok(const Options *opt, const char *path, Error *err);
 

@@ -22,7 +22,7 @@
 const Rgb DEPTH_BACKGROUND = {24, 32, 64}; /* dark blue: no grey looks like it */
 
 /* depth_to_grey: the nearest depth is white, the farthest a dark grey that
- * still stands out from black and from the background. */
+ * still stands out from black and from the background; 1/d is linear between. */
 #define GREY_NEAR 255
 #define GREY_FAR 48
 
@@ -308,8 +308,11 @@ void depth_to_grey(const float *depth, Image *out)
 void depth_to_grey_between(const float *depth, double dmin, double dmax, Image *out)
 {
     size_t pixels = (size_t)out->width * (size_t)out->height;
-    /* grey = 255 + (48 - 255) * (d - dmin) / (dmax - dmin), rounded to nearest:
-     * linear in d, so equal steps in depth are equal steps in grey. */
+    /* grey = 255 + (48 - 255) * t, rounded to nearest, with t linear in 1/d:
+     *   t = (1/dmin - 1/d) / (1/dmin - 1/dmax) = (d - dmin) / (dmax - dmin) * dmax / d
+     * (the second form divides by neither dmin nor a small difference of
+     * reciprocals). A scene that reaches far keeps its near half readable:
+     * linear in d, a corridor would be almost all near-white. */
     double range = dmax - dmin;
     for (size_t i = 0; i < pixels; i++) {
         uint8_t *p = out->rgb + i * RGB_CHANNELS;
@@ -319,7 +322,8 @@ void depth_to_grey_between(const float *depth, double dmin, double dmax, Image *
             p[2] = DEPTH_BACKGROUND.b;
             continue;
         }
-        double t = range > 0.0 ? (depth[i] - dmin) / range : 0.0;
+        double d = depth[i];
+        double t = range > 0.0 && d > 0.0 ? (d - dmin) / range * (dmax / d) : 0.0;
         t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t; /* outside a given range: its nearer end */
         uint8_t grey = (uint8_t)lround(GREY_NEAR + (GREY_FAR - GREY_NEAR) * t);
         p[0] = p[1] = p[2] = grey;

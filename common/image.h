@@ -5,7 +5,7 @@
  *  - PFM: a float image, grey, little-endian, scale -1.0, rows bottom to top as
  *    the format says. The lessons write view depth d this way (--depth-out).
  *  - PGM: 16-bit binary P5, big-endian as the format says (--overdraw-out).
- *  - depth_to_grey: near bright, far dark, background in its own colour.
+ *  - depth_to_grey: near bright, far dark (linear in 1/d), background in its own colour.
  *  - image_compare: counts, largest channel difference, bounding box, diff picture.
  *
  * Every writer is atomic (file.h): the bytes go to a temporary file in the same
@@ -64,7 +64,10 @@ bool write_pgm16(const uint32_t *counts, int width, int height, const char *path
 extern const Rgb DEPTH_BACKGROUND;
 
 /* depth: view depths d, +infinity (or any non-finite value) for background.
- * The finite range [dmin, dmax] of the buffer maps to grey 255 (near) .. 48 (far). */
+ * The finite range [dmin, dmax] of the buffer maps to grey 255 (near) .. 48 (far),
+ * linear in 1/d: t = (1/dmin - 1/d) / (1/dmin - 1/dmax), grey = 255 - 207 t,
+ * as a perspective camera sees depth (near things get most of the greys).
+ * A d <= 0 (no camera draws one) takes the nearest grey. */
 void depth_to_grey(const float *depth, Image *out);
 /* The same on a range given by the caller (--steps keeps one scale for every
  * frame); a finite d outside [dmin, dmax] takes the grey of the nearer end. */

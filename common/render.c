@@ -238,6 +238,17 @@ static bool write_colour(const Render *r, const Target *t, const Rasterizer *rz,
     return ok;
 }
 
+/* --id-out: face + 1 per pixel, whatever --shade says (shade.h face_id_colour). */
+static bool write_ids(const Target *t, const char *path, Error *err)
+{
+    Image im;
+    if (!face_id_image(t->face, t->width, t->height, &im, err))
+        return false;
+    bool ok = image_write_png(&im, path, err);
+    image_free(&im);
+    return ok;
+}
+
 static bool write_depth(const Target *t, const Rasterizer *rz, const char *path, Error *err)
 {
     float *d = render_view_depth(t, rz);
@@ -255,6 +266,9 @@ bool render_write(const Render *r, const Target *t, const Rasterizer *rz, const 
         return false;
     if (opt->depth_out &&
         !(make_parent_dirs(opt->depth_out, err) && write_depth(t, rz, opt->depth_out, err)))
+        return false;
+    if (opt->id_out &&
+        !(make_parent_dirs(opt->id_out, err) && write_ids(t, opt->id_out, err)))
         return false;
     if (opt->overdraw_out &&
         !(make_parent_dirs(opt->overdraw_out, err) &&
@@ -303,7 +317,8 @@ void render_print_summary(FILE *out, const char *program, const Render *r, const
     else
         fprintf(out, "no pixel covered\n");
 
-    const char *written[] = {opt->out, opt->depth_out, opt->overdraw_out, opt->world_out};
+    const char *written[] = {opt->out, opt->depth_out, opt->id_out, opt->overdraw_out,
+                             opt->world_out};
     for (size_t k = 0; k < sizeof written / sizeof written[0]; k++)
         if (written[k])
             fprintf(out, "  wrote %s\n", written[k]);

@@ -11,7 +11,9 @@
  *                   comes in a later lesson) or a screen position that is not
  *                   a finite number, and counts what it drew and dropped
  *   render_write    --out PNG as --shade says (shade.h), --depth-out PFM as
- *                   view depth d, --overdraw-out PGM16, --world-out (world_view.h); atomic, and the
+ *                   view depth d, --overdraw-out PGM16, --id-out PNG of face
+ *                   index + 1 (shade.h face_id_colour), --world-out
+ *                   (world_view.h); atomic, and the
  *                   directories of the outputs are created when missing
  *   render_print_summary   what was drawn, what the depth test did
  *

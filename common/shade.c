@@ -23,6 +23,29 @@ static const Rgb PALETTE[] = {
 };
 #define PALETTE_SIZE ((int)(sizeof PALETTE / sizeof PALETTE[0]))
 
+/* --shade id (shade.h): picked by farthest-point sampling in CIELAB among
+ * colours of lightness 40 to 92, then ordered so that consecutive entries
+ * (and the last and the first) differ most. */
+static const Rgb ID_PALETTE[ID_PALETTE_SIZE] = {
+    {160, 80, 0},    /* brown */
+    {255, 160, 255}, /* pink */
+    {0, 255, 0},     /* green */
+    {0, 200, 255},   /* sky blue */
+    {255, 200, 160}, /* peach */
+    {0, 255, 200},   /* aquamarine */
+    {80, 160, 0},    /* grass green */
+    {255, 200, 0},   /* gold */
+    {255, 0, 255},   /* magenta */
+    {200, 80, 120},  /* rose */
+    {200, 240, 160}, /* pale green */
+    {80, 120, 200},  /* steel blue */
+    {255, 0, 160},   /* hot pink */
+    {230, 40, 40},   /* red */
+    {120, 120, 40},  /* olive */
+    {0, 80, 240},    /* blue */
+    {200, 240, 0},   /* lime */
+};
+
 /* Towards the light, in view space: above (+y), left (-x), behind the viewer (+z). */
 static Vec3 light_direction(void)
 {
@@ -80,6 +103,11 @@ Rgb face_id_colour(int face)
     return c;
 }
 
+Rgb face_shade_id_colour(int face)
+{
+    return ID_PALETTE[(unsigned)face % ID_PALETTE_SIZE];
+}
+
 int32_t id_colour_face(Rgb c)
 {
     return (int32_t)(((uint32_t)c.r << 16) | ((uint32_t)c.g << 8) | c.b) - 1;
@@ -110,9 +138,21 @@ bool shade_image(const Mesh *m, const Camera *camera, const int32_t *face,
     for (int y = 0; y < height; y++)
         for (int x = 0; x < width; x++) {
             int32_t f = face[(size_t)y * (size_t)width + (size_t)x];
-            Rgb c = f == NO_FACE ? background : flat ? flat[f] : face_id_colour(f);
+            Rgb c = f == NO_FACE ? background : flat ? flat[f] : face_shade_id_colour(f);
             image_set(out, x, y, c);
         }
     free(flat);
+    return true;
+}
+
+bool face_id_image(const int32_t *face, int width, int height, Image *out, Error *err)
+{
+    if (!image_init(out, width, height, err))
+        return false;
+    for (int y = 0; y < height; y++)
+        for (int x = 0; x < width; x++) {
+            int32_t f = face[(size_t)y * (size_t)width + (size_t)x];
+            image_set(out, x, y, f == NO_FACE ? ID_BACKGROUND : face_id_colour(f));
+        }
     return true;
 }

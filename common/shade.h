@@ -9,9 +9,16 @@
  *          behind is as bright as from the front. Base colour: the face's
  *          material Kd, else a fixed palette indexed by face. Background: a
  *          dark grey-blue, so that a black face still shows.
- *   id     face + 1 as a 24-bit big-endian number (R is the high byte);
- *          background black (docs/conventions.md).
- *   depth  depth_to_grey (image.h) of the view depth d. */
+ *   id     for people: face i takes ID_PALETTE[i % 17], 17 colours far
+ *          apart (CIELAB distance >= 39 between any two, >= 59 between
+ *          consecutive ones, all far from black) in an order where consecutive
+ *          faces differ most; 17 is prime, so a grid of faces whose rows are
+ *          2^k long does not line up equal colours. Background black.
+ *          Colours repeat every 17 faces: tools read exact faces from
+ *          --id-out (face_id_image) instead.
+ *   depth  depth_to_grey (image.h) of the view depth d: the nearest drawn
+ *          depth white, the farthest dark grey, linear in 1/d between them;
+ *          background DEPTH_BACKGROUND. */
 #ifndef SHADE_H
 #define SHADE_H
 
@@ -35,7 +42,11 @@ extern const Rgb ID_BACKGROUND;   /* black: no face */
 Rgb face_base_colour(const Mesh *m, int face);
 /* The face's flat-shaded colour as seen by camera. */
 Rgb face_flat_colour(const Mesh *m, const Camera *camera, int face);
-/* face + 1 in 24 bits, big-endian: face 0 is (0, 0, 1), face 256 is (0, 1, 1). */
+/* --shade id's colour of a face: ID_PALETTE[face % ID_PALETTE_SIZE]. */
+#define ID_PALETTE_SIZE 17
+Rgb face_shade_id_colour(int face);
+/* face + 1 in 24 bits, big-endian: face 0 is (0, 0, 1), face 256 is (0, 1, 1).
+ * The colours of --id-out (docs/conventions.md). */
 Rgb face_id_colour(int face);
 /* The inverse: the face index a pixel of an id picture shows, NO_FACE for black. */
 int32_t id_colour_face(Rgb c);
@@ -46,5 +57,9 @@ int32_t id_colour_face(Rgb c);
 bool shade_image(const Mesh *m, const Camera *camera, const int32_t *face,
                  const float *view_depth, int width, int height, ShadeMode mode,
                  Image *out, Error *err);
+
+/* The --id-out picture: face_id_colour of each pixel of face[], black where
+ * NO_FACE. out is initialised here. */
+bool face_id_image(const int32_t *face, int width, int height, Image *out, Error *err);
 
 #endif

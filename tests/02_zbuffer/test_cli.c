@@ -187,8 +187,88 @@ static void summary_agrees_with_the_written_files(void **state)
     free(depth);
 }
 
+/* triangles3's faces 0, 1, 2 are red, green and blue when shaded flat (no
+ * material: the flat palette). Every pixel of --id-out names the face whose
+ * colour the flat picture shows there, exactly, and black is the background;
+ * the summary lists the file among what it wrote. */
+static int flat_face(Rgb c)
+{
+    if (c.r == FLAT_BACKGROUND.r && c.g == FLAT_BACKGROUND.g && c.b == FLAT_BACKGROUND.b)
+        return NO_FACE;
+    return c.r > c.g && c.r > c.b ? 0 : c.g > c.r && c.g > c.b ? 1 : 2;
+}
+
+static void id_out_round_trips_face_indices(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("02_id_out");
+    Path flat = in_dir(dir, "flat.png"), ids = in_dir(dir, "ids.png");
+    const char *args[] = {"--width", "160", "--height", "120", "--out", flat.path,
+                          "--id-out", ids.path, NULL};
+    RunResult r = run_program(PROGRAM, args);
+    expect_count(0, r.status, "exit status");
+    char wrote[4200];
+    snprintf(wrote, sizeof wrote, "  wrote %s\n", ids.path);
+    if (!strstr(r.out, wrote))
+        fail_msg("the summary does not say '%s':\n%s", wrote, r.out);
+    run_result_free(&r);
+
+    Image picture = read_png(flat.path), id = read_png(ids.path);
+    long count[3] = {0, 0, 0};
+    for (int y = 0; y < 120; y++)
+        for (int x = 0; x < 160; x++) {
+            int want = flat_face(image_get(&picture, x, y));
+            int32_t got = face_at(&id, x, y);
+            if (got != want)
+                fail_msg("pixel (%d,%d): --id-out says face %d, the flat picture shows face %d",
+                         x, y, got, want);
+            if (got >= 0)
+                count[got]++;
+        }
+    for (int f = 0; f < 3; f++)
+        if (count[f] == 0)
+            fail_msg("face %d wins no pixel", f);
+    image_free(&picture);
+    image_free(&id);
+}
+
+static double colour_distance(Rgb a, Rgb b)
+{
+    double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
+    return sqrt(dr * dr + dg * dg + db * db);
+}
+
+/* --shade id paints each face in its palette colour (the face read from
+ * --id-out of the same run), and triangles3's three faces in colours far
+ * apart from each other and from the black background. */
+static void shade_id_gives_faces_distinct_colours(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("02_shade_id");
+    Path out = in_dir(dir, "shade_id.png"), ids = in_dir(dir, "ids.png");
+    const char *args[] = {"--shade", "id", "--width", "160", "--height", "120",
+                          "--out", out.path, "--id-out", ids.path, NULL};
+    free(run_ok(PROGRAM, args));
+    Image picture = read_png(out.path), id = read_png(ids.path);
+    for (int y = 0; y < 120; y++)
+        for (int x = 0; x < 160; x++) {
+            int32_t f = face_at(&id, x, y);
+            Rgb want = f == NO_FACE ? ID_BACKGROUND : face_shade_id_colour(f);
+            expect_colour(want, image_get(&picture, x, y), "--shade id pixel");
+        }
+    for (int a = 0; a < 3; a++) {
+        if (colour_distance(face_shade_id_colour(a), ID_BACKGROUND) < 150)
+            fail_msg("face %d's colour is too close to the background", a);
+        for (int b = 0; b < a; b++)
+            if (colour_distance(face_shade_id_colour(a), face_shade_id_colour(b)) < 120)
+                fail_msg("faces %d and %d have colours too much alike", b, a);
+    }
+    image_free(&picture);
+    image_free(&id);
+}
+
 /* An OBJ of one square facing +Z, coloured by its .mtl: --obj frames it, so
- * the centre pixel shows it; --shade id gives it id 1; flat keeps Kd's hue. */
+ * the centre pixel shows it; --id-out gives it id 1; flat keeps Kd's hue. */
 static void obj_file_is_framed_and_coloured(void **state)
 {
     (void)state;
@@ -205,8 +285,8 @@ static void obj_file_is_framed_and_coloured(void **state)
     fclose(f);
 
     const char *id_png = path_join(dir, "id.png"), *flat_png = path_join(dir, "flat.png");
-    const char *a1[] = {"--obj", obj, "--shade", "id", "--width", "64", "--height", "48",
-                        "--out", id_png, NULL};
+    const char *a1[] = {"--obj", obj, "--id-out", id_png, "--width", "64", "--height", "48",
+                        "--out", path_join(dir, "picture.png"), NULL};
     Image im;
     render_to_image(a1, id_png, &im);
     expect_face_at(&im, 32, 24, 0, "");
@@ -295,6 +375,8 @@ int main(void)
         cmocka_unit_test(clear_zero_picture_is_background_only),
         cmocka_unit_test(summary_agrees_with_the_written_files),
         cmocka_unit_test(obj_file_is_framed_and_coloured),
+        cmocka_unit_test(id_out_round_trips_face_indices),
+        cmocka_unit_test(shade_id_gives_faces_distinct_colours),
         cmocka_unit_test(bad_lesson_flags_are_usage_errors),
         cmocka_unit_test(missing_obj_fails_without_output),
         cmocka_unit_test(unwritable_output_fails_cleanly),

@@ -96,11 +96,12 @@ static void naive_rule_draws_what_lesson_02_draws(void **state)
         char *files[2][2];
         size_t lens[2][2];
         for (int lesson = 0; lesson < 2; lesson++) {
-            char png[4096], pfm[4096];
+            char png[4096], pfm[4096], picture[4096];
             snprintf(png, sizeof png, "%s/%s_%d.png", dir, scenes[s], lesson);
             snprintf(pfm, sizeof pfm, "%s/%s_%d.pfm", dir, scenes[s], lesson);
-            const char *args[16] = {"--scene", scenes[s], "--shade", "id", "--width", "200",
-                                    "--height", "150", "--out", png, "--depth-out", pfm};
+            snprintf(picture, sizeof picture, "%s/%s_%d_flat.png", dir, scenes[s], lesson);
+            const char *args[20] = {"--scene", scenes[s], "--id-out", png, "--width", "200",
+                                    "--height", "150", "--out", picture, "--depth-out", pfm};
             int n = 12;
             if (lesson == 0) { /* lesson 02 has no such flag: it knows one rule */
                 args[n++] = "--depth-interp";

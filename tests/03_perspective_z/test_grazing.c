@@ -96,14 +96,15 @@ static Image read_grazing_png(const char *path)
     return im;
 }
 
-/* grazing at the default size, --shade id, with the given extra flags. */
+/* grazing at the default size, its --id-out, with the given extra flags. */
 static Image render_id(const char *name, const char *flag, const char *value)
 {
-    char out[4096];
-    snprintf(out, sizeof out, "%s", path_join(test_dir(name), "id.png"));
-    const char *args[] = {"--scene", "grazing", "--shade", "id", "--out", out, flag, value, NULL};
+    const char *dir = test_dir(name);
+    Path out = in_dir(dir, "id.png"), picture = in_dir(dir, "picture.png");
+    const char *args[] = {"--scene", "grazing", "--id-out", out.path, "--out", picture.path,
+                          flag,      value,     NULL};
     free(run_ok(PROGRAM, args));
-    return read_grazing_png(out);
+    return read_grazing_png(out.path);
 }
 
 /* The test's own count of its pixels, so that a change of scene shows here

@@ -9,7 +9,7 @@
  * other one: that happens only where faces meet, on polygon edges.
  *
  * For every built-in scene and one OBJ mesh (a sphere pierced by a box),
- * both programs render --shade id; the test asserts that at least 99.9% of
+ * both programs write --id-out; the test asserts that at least 99.9% of
  * the pixels show the same face, that every pixel that differs lies on a
  * polygon edge (a pixel next to a pixel of another face, in either picture),
  * and prints the count. */
@@ -39,14 +39,15 @@
 
 static Image render_id(const char *program, const char *dir, const char *const *source)
 {
-    const char *out = path_join(dir, program);
-    const char *args[16] = {"--shade", "id", "--width", WIDTH, "--height", HEIGHT, "--out", out};
+    Path out = in_dir(dir, program), picture = in_dir(dir, "picture.png");
+    const char *args[16] = {"--id-out", out.path, "--width", WIDTH, "--height", HEIGHT,
+                            "--out",    picture.path};
     int n = 8;
     for (int k = 0; source[k]; k++)
         args[n++] = source[k];
     args[n] = NULL;
     free(run_ok(program, args));
-    return read_png(out);
+    return read_png(out.path);
 }
 
 /* A pixel on a polygon edge: one of its 8 neighbours shows another face. */

@@ -76,6 +76,65 @@ static void every_scene_matches_its_expected_pictures(void **state)
         }
 }
 
+/* ---- --shade depth: the whole grey range over the depths drawn ---------- */
+
+/* The walls corridor reaches from about 1 to about 42 units. --shade depth
+ * gives the nearest drawn pixel (the smallest d of --depth-out) grey 255, the
+ * farthest 48, every other pixel 255 - 207 t with t linear in 1/d between
+ * them, and the background DEPTH_BACKGROUND; linear in d, most of the
+ * corridor would be near-white, linear in 1/d less than half of it is. */
+static void shade_depth_spreads_greys_over_the_drawn_depths(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("l04_shade_depth");
+    Path out = in_dir(dir, "depth.png"), pfm = in_dir(dir, "depth.pfm");
+    const char *args[] = {"--shade", "depth", "--width", "240", "--height", "180",
+                          "--out", out.path, "--depth-out", pfm.path, NULL};
+    RunResult r = run_program(PROGRAM, args);
+    expect_count(0, r.status, "exit status");
+    run_result_free(&r);
+    Image im = read_png(out.path);
+    float *d;
+    int w, h;
+    Error err;
+    if (!read_pfm(&d, &w, &h, pfm.path, &err))
+        fail_msg("%s", err.msg);
+    double dmin = INFINITY, dmax = 0;
+    for (int i = 0; i < w * h; i++)
+        if (isfinite(d[i])) {
+            dmin = fmin(dmin, d[i]);
+            dmax = fmax(dmax, d[i]);
+        }
+    int lightest = 0, darkest = 255;
+    long drawn = 0, near_white = 0;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            float v = d[y * w + x];
+            Rgb c = image_get(&im, x, y);
+            if (!isfinite(v)) {
+                expect_colour(DEPTH_BACKGROUND, c, "background");
+                continue;
+            }
+            double t = (1 / dmin - 1 / (double)v) / (1 / dmin - 1 / dmax);
+            int want = (int)lround(255 - 207 * t);
+            if (c.r != c.g || c.g != c.b || abs(c.r - want) > 1)
+                fail_msg("pixel (%d,%d) at d = %g is (%d,%d,%d), expected grey %d", x, y, v, c.r,
+                         c.g, c.b, want);
+            lightest = c.r > lightest ? c.r : lightest;
+            darkest = c.r < darkest ? c.r : darkest;
+            drawn++;
+            near_white += c.r >= 230;
+        }
+    expect_count(255, lightest, "grey of the nearest pixel");
+    expect_count(48, darkest, "grey of the farthest pixel");
+    if (near_white * 2 > drawn)
+        fail_msg("%ld of %ld drawn pixels are near-white (grey >= 230)", near_white, drawn);
+    printf("  walls: d from %.3f to %.3f, %ld of %ld drawn pixels near-white\n", dmin, dmax,
+           near_white, drawn);
+    free(d);
+    image_free(&im);
+}
+
 /* ---- a quad whose depth is known ------------------------------------------ */
 
 /* A square x, y in [-1, 1] at z = -5, seen from the origin down -Z with
@@ -247,6 +306,7 @@ int main(void)
         cmocka_unit_test(default_run_draws_the_walls_and_finds_the_front_object),
         cmocka_unit_test(every_scene_matches_its_expected_pictures),
         cmocka_unit_test(depth_out_writes_view_depth_not_its_inverse),
+        cmocka_unit_test(shade_depth_spreads_greys_over_the_drawn_depths),
         cmocka_unit_test(nothing_at_the_centre_is_reported),
         cmocka_unit_test(ascii_and_trace_speak_of_inverse_depth),
         cmocka_unit_test(steps_write_a_frame_per_face),

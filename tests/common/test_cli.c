@@ -121,6 +121,8 @@ static const BadLine BAD_LINES[] = {
     /* an output may not replace an input or another output */
     {&SPEC_3D, {"--obj", "m.obj", "--out", "m.obj"}, "--obj and --out both name m.obj"},
     {&SPEC_3D, {"--out", "a.pfm", "--depth-out", "a.pfm"}, "--out and --depth-out both name a.pfm"},
+    {&SPEC_3D, {"--out", "i.png", "--id-out", "i.png"}, "--out and --id-out both name i.png"},
+    {&SPEC_3D, {"--id-out", "x", "--overdraw-out", "x"}, "--overdraw-out and --id-out both name x"},
     {&SPEC_3D, {"--depth-out", "x", "--overdraw-out", "x"},
      "--depth-out and --overdraw-out both name x"},
     {&SPEC_3D, {"--obj", "out/02_test.png"}, "--obj and --out both name out/02_test.png"},
@@ -147,6 +149,7 @@ static const BadLine BAD_LINES[] = {
     {&SPEC_1D, {"--obj", "m.obj"}, "--obj does not apply to 01_test (it draws its own scene only)"},
     {&SPEC_1D, {"--shade", "id"}, "--shade does not apply to 01_test (it has one way of shading)"},
     {&SPEC_1D, {"--painter"}, "unknown flag '--painter' (try --help)"},
+    {&SPEC_1D, {"--id-out", "i.png"}, "--id-out does not apply to 01_test (it has no faces)"},
     {&SPEC_PARTIAL, {"--depth-out", "d.pfm"},
      "--depth-out does not apply to 03_partial (it writes no depth buffer)"},
     {&SPEC_PARTIAL, {"--overdraw-out", "o.pgm"},
@@ -264,6 +267,7 @@ static void no_arguments_give_the_lesson_defaults(void **state)
     assert_false(opt.trace_set);
     assert_false(opt.ascii);
     assert_null(opt.depth_out);
+    assert_null(opt.id_out);
     assert_null(opt.extra[EXTRA_PAINTER]);
     assert_null(opt.extra[EXTRA_MAX_FACES]);
 }
@@ -275,7 +279,8 @@ static void every_flag_lands_in_its_field(void **state)
                           "--eye", "-1,2.5,3", "--target", "0,0,-1", NULL};
     const char *more[] = {"--up", "0,1,0", "--fovy", "45", "--near", "0.5", "--far", "50",
                           "--shade", "depth", "--trace", "10,20", NULL};
-    const char *rest[] = {"--depth-out", "d.pfm", "--overdraw-out", "o.pgm", "--ascii",
+    const char *rest[] = {"--depth-out", "d.pfm", "--overdraw-out", "o.pgm", "--id-out", "i.png",
+                          "--ascii",
                           "--compare", "ref.png", "--steps", "steps", "--painter",
                           "--max-faces", "12", NULL};
     /* one argv of all three lists */
@@ -305,6 +310,7 @@ static void every_flag_lands_in_its_field(void **state)
     assert_int_equal(opt.trace_y, 20);
     assert_string_equal(opt.depth_out, "d.pfm");
     assert_string_equal(opt.overdraw_out, "o.pgm");
+    assert_string_equal(opt.id_out, "i.png");
     assert_true(opt.ascii);
     assert_string_equal(opt.compare, "ref.png");
     assert_string_equal(opt.steps_dir, "steps");

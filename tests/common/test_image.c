@@ -352,17 +352,18 @@ static void pgm16_header_big_endian_and_clamped(void **state)
 static void depth_to_grey_near_white_far_dark_background_blue(void **state)
 {
     (void)state;
-    /* Finite range [2, 4]: grey = 255 - 207 * (d - 2) / 2.
+    /* Finite range [2, 4], linear in 1/d: t = (1/2 - 1/d) / (1/2 - 1/4),
+     * grey = 255 - 207 t.
      *   d = 2   -> 255 (nearest)
      *   d = 4   -> 48  (farthest)
-     *   d = 2.5 -> 255 - 207 * 0.25 = 203.25 -> 203
+     *   d = 2.5 -> t = (0.5 - 0.4) / 0.25 = 0.4 -> 255 - 82.8 = 172.2 -> 172
      *   +inf and NaN: nothing drawn -> DEPTH_BACKGROUND */
     const float depth[5] = {2.0f, 4.0f, 2.5f, INFINITY, NAN};
     Image im = new_image(5, 1);
     depth_to_grey(depth, &im);
     expect_pixel(&im, 0, 0, (Rgb){255, 255, 255}, "");
     expect_pixel(&im, 1, 0, (Rgb){48, 48, 48}, "");
-    expect_pixel(&im, 2, 0, (Rgb){203, 203, 203}, "");
+    expect_pixel(&im, 2, 0, (Rgb){172, 172, 172}, "");
     Rgb bg = DEPTH_BACKGROUND;
     expect_pixel(&im, 3, 0, bg, "");
     expect_pixel(&im, 4, 0, bg, "");

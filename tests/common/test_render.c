@@ -82,6 +82,39 @@ static void clip_survives_the_largest_doubles(void **state)
 
 /* ---- shade ------------------------------------------------------------------- */
 
+static double colour_distance(Rgb a, Rgb b)
+{
+    double dr = a.r - b.r, dg = a.g - b.g, db = a.b - b.b;
+    return sqrt(dr * dr + dg * dg + db * db);
+}
+
+/* --shade id is read by eye: any two of the 17 colours differ by at least 60
+ * in RGB (most by far more), consecutive faces by at least 120, and every
+ * colour stands out from the black background; face 17 starts again. */
+static void shade_id_colours_are_far_apart(void **state)
+{
+    (void)state;
+    Rgb black = {0, 0, 0};
+    for (int i = 0; i < ID_PALETTE_SIZE; i++) {
+        Rgb a = face_shade_id_colour(i);
+        if (colour_distance(a, black) < 150)
+            fail_msg("face %d's colour (%d,%d,%d) is too close to the black background", i,
+                     a.r, a.g, a.b);
+        for (int j = 0; j < i; j++) {
+            Rgb b = face_shade_id_colour(j);
+            double min = j == i - 1 ? 120 : 60;
+            if (colour_distance(a, b) < min)
+                fail_msg("faces %d and %d: colours (%d,%d,%d) and (%d,%d,%d) differ by %.1f, "
+                         "less than %.0f", j, i, b.r, b.g, b.b, a.r, a.g, a.b,
+                         colour_distance(a, b), min);
+        }
+        expect_colour(a, face_shade_id_colour(i + ID_PALETTE_SIZE), "the palette cycles");
+    }
+    if (colour_distance(face_shade_id_colour(ID_PALETTE_SIZE - 1),
+                        face_shade_id_colour(ID_PALETTE_SIZE)) < 120)
+        fail_msg("the last colour and the first (faces 16 and 17) differ by less than 120");
+}
+
 static void id_colours_are_face_plus_one_big_endian(void **state)
 {
     (void)state;
@@ -304,19 +337,22 @@ static void outputs_are_written_into_new_directories(void **state)
     assert_true(render_target_init(&t, &RECORDER, 8, 8, &err));
     assert_true(render_faces(&r, &t, &RECORDER, NULL, 0, NULL, NULL, &err));
     const char *dir = test_dir("render_outputs");
-    char png[512], pfm[512], pgm[512];
+    char png[512], pfm[512], pgm[512], ids[512];
     snprintf(png, sizeof png, "%s/a/b/pic.png", dir);
+    snprintf(ids, sizeof ids, "%s/d/ids.png", dir);
     snprintf(pfm, sizeof pfm, "%s/c/depth.pfm", dir);
     snprintf(pgm, sizeof pgm, "%s/over.pgm", dir);
     Options opt = {0};
     opt.out = png;
     opt.depth_out = pfm;
     opt.overdraw_out = pgm;
-    opt.shade = SHADE_ID;
+    opt.id_out = ids;
+    opt.shade = SHADE_FLAT;
     if (!render_write(&r, &t, &RECORDER, &opt, &err))
         fail_msg("render_write: %s", err.msg);
     Image im;
-    assert_true(image_read_png(&im, png, &err));
+    assert_true(file_exists(png));
+    assert_true(image_read_png(&im, ids, &err));
     expect_face_at(&im, 4, 4, 0, "");
     expect_face_at(&im, 0, 0, NO_FACE, "");
     image_free(&im);
@@ -326,7 +362,7 @@ static void outputs_are_written_into_new_directories(void **state)
     char bad[600];
     snprintf(bad, sizeof bad, "%s/nested/x.png", pgm);
     opt.out = bad;
-    opt.depth_out = opt.overdraw_out = NULL;
+    opt.depth_out = opt.overdraw_out = opt.id_out = NULL;
     assert_false(render_write(&r, &t, &RECORDER, &opt, &err));
     assert_true(strlen(err.msg) > 0);
     assert_false(file_exists(bad));
@@ -363,6 +399,7 @@ int main(void)
         cmocka_unit_test(clip_puts_new_corners_on_the_band_with_the_lessons_depth),
         cmocka_unit_test(clip_survives_the_largest_doubles),
         cmocka_unit_test(id_colours_are_face_plus_one_big_endian),
+        cmocka_unit_test(shade_id_colours_are_far_apart),
         cmocka_unit_test(flat_colour_is_kd_times_lambert),
         cmocka_unit_test(faces_without_material_get_distinct_palette_colours),
         cmocka_unit_test(faces_reach_the_rasterizer_in_the_given_order),

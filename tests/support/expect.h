@@ -24,7 +24,7 @@
 #include "image.h"
 #include "target.h"
 
-/* The face a pixel of an id picture (--id-out, --shade id) shows, NO_FACE for
+/* The face a pixel of an id picture (--id-out) shows, NO_FACE for
  * the black background. */
 int32_t face_at(const Image *id_picture, int x, int y);
 /* What the target holds at pixel (x, y). */
