@@ -227,10 +227,11 @@ valgrind: $(BINS)
 
 # ---- Classroom: hand a lesson out, grade it (docs/teaching.md) -------------
 #
-#   make handout LESSON=03 [DEST=dir] [ONLY=1]
+#   make handout LESSON=03 [DEST=dir] [ONLY=1] [EARLIER=solved|stubbed|absent]
 #       the student's tree: lesson 03 with each solution region replaced by
-#       its stub and a TODO(student) hint (scripts/handout.sh); ONLY=1 leaves
-#       the other lessons out. DEST defaults to $(BUILD)/handout/<lesson>.
+#       its stub and a TODO(student) hint (scripts/handout.sh); ONLY=1 (or
+#       EARLIER=absent) leaves the other lessons out, EARLIER=stubbed takes
+#       their regions out too. DEST defaults to $(BUILD)/handout/<lesson>.
 #   make grade [LESSON=NN] [TEST=name] [TIME_LIMIT=seconds]
 #       runs the lessons' tests, each under a time limit (10 s by default),
 #       prints a score table with the points of tests/<lesson>/points.txt and
@@ -245,6 +246,7 @@ GRADE_TESTS   := $(patsubst tests/%.c,$(BUILD)/tests/%,\
 
 handout:
 	@sh scripts/handout.sh --build "$(BUILD)" $(if $(filter 1,$(ONLY)),--only) \
+	    $(if $(EARLIER),--earlier "$(EARLIER)") \
 	    $(if $(DEST),--dest "$(DEST)") "$(LESSON)"
 
 # Student code that does not compile costs the points of the tests that need
