@@ -242,7 +242,12 @@ GRADE_LESSONS := $(if $(LESSON),$(filter $(LESSON)%,$(LESSONS)),$(LESSONS))
 GRADE_TESTS   := $(patsubst tests/%.c,$(BUILD)/tests/%,\
                    $(foreach l,$(GRADE_LESSONS),$(wildcard tests/$(l)/test_*.c)))
 
-.PHONY: handout grade grade-build
+.PHONY: handout grade grade-build autograder classroom
+
+#   make autograder LESSON=NN   the Gradescope autograder zip of one lesson
+#       ($(BUILD)/autograder/<lesson>.zip: setup.sh, run_autograder, the series)
+autograder:
+	@sh scripts/autograder.sh --build "$(BUILD)" "$(LESSON)"
 
 handout:
 	@sh scripts/handout.sh --build "$(BUILD)" $(if $(filter 1,$(ONLY)),--only) \
