@@ -249,6 +249,11 @@ GRADE_TESTS   := $(patsubst tests/%.c,$(BUILD)/tests/%,\
 autograder:
 	@sh scripts/autograder.sh --build "$(BUILD)" "$(LESSON)"
 
+#   make classroom LESSON=NN [DEST=file]   GitHub Classroom's autograding tests,
+#       .github/classroom/autograding.json: one per test with points
+classroom:
+	@sh scripts/classroom.sh $(if $(DEST),--dest "$(DEST)") "$(LESSON)"
+
 handout:
 	@sh scripts/handout.sh --build "$(BUILD)" $(if $(filter 1,$(ONLY)),--only) \
 	    $(if $(EARLIER),--earlier "$(EARLIER)") \

@@ -519,6 +519,37 @@ static void autograder_grades_the_submission_only_and_cannot_be_forged(void **st
     }
 }
 
+/* make classroom: GitHub Classroom's autograding.json, read back as JSON:
+ * one test per line of points.txt with points, with every field it wants. */
+static void classroom_config_has_one_test_per_pointed_test(void **state)
+{
+    (void)state;
+    ShellResult r = shell_ok(tree, "make classroom LESSON=09");
+    shell_result_free(&r);
+    char *text = read_text(path_join(tree, ".github/classroom/autograding.json"));
+    JsonValue v;
+    char why[256];
+    if (!json_parse(text, strlen(text), &v, why, sizeof why))
+        fail_msg("autograding.json is not JSON: %s\n%s", why, text);
+    free(text);
+    const JsonValue *tests = field(&v, "tests", JSON_ARRAY);
+    assert_int_equal(tests->count, 9);
+    double points = 0;
+    static const char *const strings[] = {"name", "setup", "run", "input", "output", "comparison"};
+    for (size_t i = 0; i < tests->count; i++) {
+        for (size_t k = 0; k < sizeof strings / sizeof strings[0]; k++)
+            field(&tests->items[i], strings[k], JSON_STRING);
+        field(&tests->items[i], "timeout", JSON_NUMBER);
+        points += field(&tests->items[i], "points", JSON_NUMBER)->number;
+        char want[300];
+        snprintf(want, sizeof want, "make grade LESSON=09 TEST=%s",
+                 field(&tests->items[i], "name", JSON_STRING)->string);
+        assert_string_equal(field(&tests->items[i], "run", JSON_STRING)->string, want);
+    }
+    assert_true(points == EXPECTED_MAX);
+    json_free(&v);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -532,6 +563,7 @@ int main(void)
         cmocka_unit_test_teardown(handout_refuses_bad_requests, restore_tree),
         cmocka_unit_test_teardown(autograder_grades_the_submission_only_and_cannot_be_forged,
                                   restore_tree),
+        cmocka_unit_test_teardown(classroom_config_has_one_test_per_pointed_test, restore_tree),
     };
     return cmocka_run_group_tests_name("tools: make grade and make handout on a made-up lesson",
                                        tests, set_up_tree, NULL);
