@@ -83,7 +83,8 @@ esac
 # Where each run's nonce and result files go: a directory of random name.
 GRADE_PRIVATE=$(mktemp -d "${TMPDIR:-/tmp}/grade.XXXXXXXXXX") || { echo "$prog: error: no temporary directory" >&2; exit 1; }
 trap 'rm -rf "$GRADE_PRIVATE"' EXIT
-export GRADE_DEADLINE GRADE_PRIVATE GRADE_LIMIT="$limit" GRADE_BUILD="$build"
+export GRADE_DEADLINE GRADE_PRIVATE GRADE_LIMIT="$limit" GRADE_BUILD="$build" GRADE_OUTPUT="$build/test-output/grade"
+rm -rf "$GRADE_OUTPUT"
 export BIN_DIR="$build/bin" TOOL_DIR="$build/tools" TEST_OUTPUT="$build/test-output"
 
 # What a status of time_limit says about a run that did not finish a test.
@@ -231,7 +232,11 @@ for lesson in "$@"; do
         d=$(mktemp -d "$GRADE_PRIVATE/run.XXXXXXXX") || exit 0
         nonce=$(od -An -N16 -tx1 /dev/urandom | tr -d " \n")
         echo "$nonce" >"$d/n"
-        env -u UPDATE_EXPECTED TEST_FILTER="$name" GRADE_NONCE_FILE="$d/n" GRADE_RESULT_FILE="$d/r" \
+        # Its own TEST_OUTPUT: tests of one program run side by side here,
+        # and their scratch files must not meet.
+        mkdir -p "$GRADE_OUTPUT/$bin.$name"
+        env -u UPDATE_EXPECTED TEST_OUTPUT="$GRADE_OUTPUT/$bin.$name" \
+            TEST_FILTER="$name" GRADE_NONCE_FILE="$d/n" GRADE_RESULT_FILE="$d/r" \
             "$0" "$lim" "$GRADE_BUILD/tests/$GRADE_LESSON/$bin" >"$out.log" 2>&1 </dev/null
         st=$?
         r=$(cat "$d/r" 2>/dev/null)

@@ -7,8 +7,8 @@
  * - stdout is unbuffered: cmocka prints a test's name and result on stdout and
  *   its failure messages on stderr. When both go to one log (make test, make
  *   grade), each message then lands under the test that printed it.
- * - UPDATE_EXPECTED is read once, here, before any code under test runs:
- *   code that sets it later changes nothing (test_update_expected()).
+ * - UPDATE_EXPECTED: while grading it is ignored altogether, whatever the
+ *   code under test sets (test_update_expected()).
  *
  * Grading (scripts/grade.sh, docs/teaching.md "Results a student cannot
  * forge"). The grader does not read what a test prints to decide whether it
@@ -50,7 +50,10 @@ static bool grading;
 
 bool test_update_expected(void)
 {
-    return update_expected_asked && !grading;
+    if (grading)
+        return false;
+    const char *update = getenv("UPDATE_EXPECTED"); /* (a test of expect_image sets it) */
+    return update_expected_asked || (update && strcmp(update, "1") == 0);
 }
 
 bool test_grading(void)
@@ -92,7 +95,8 @@ __attribute__((constructor)) static void before_main(void)
     }
     unsetenv("GRADE_NONCE_FILE");
     unsetenv("GRADE_RESULT_FILE");
-    unsetenv("UPDATE_EXPECTED");
+    if (grading)
+        unsetenv("UPDATE_EXPECTED");
 }
 
 int __real__cmocka_run_group_tests(const char *group_name, const struct CMUnitTest *const tests,
