@@ -238,7 +238,10 @@ valgrind: $(BINS)
 #       writes $(BUILD)/grade/results.json in Gradescope's format (the test
 #       programs run GRADE_JOBS at a time, the number of cores by default). TEST=name
 #       grades one test; the exit status then says if it passed.
-GRADE_LESSONS := $(if $(LESSON),$(filter $(LESSON)%,$(LESSONS)),$(LESSONS))
+# Without LESSON=, the lessons that have a points file: a handout keeps a
+# lesson whose program its tests run, but not that lesson's tests.
+GRADE_LESSONS := $(if $(LESSON),$(filter $(LESSON)%,$(LESSONS)),\
+                   $(foreach l,$(LESSONS),$(if $(wildcard tests/$(l)/points.txt),$(l))))
 GRADE_TESTS   := $(patsubst tests/%.c,$(BUILD)/tests/%,\
                    $(foreach l,$(GRADE_LESSONS),$(wildcard tests/$(l)/test_*.c)))
 
