@@ -29,7 +29,7 @@ OPT      ?= -O2 -g
 # -Werror wins): docs/conventions.md, C11, warnings are errors, and no
 # contraction of a*b+c into fma, so that pictures do not change with the
 # optimisation level. tests/tools/test_make_flags.c checks it.
-override WARN := -std=c11 -Wall -Wextra -Werror -pedantic \
+override WARN := -std=c11 -Wall -Wextra $(if $(filter 1,$(GRADE_WARNINGS_SHOWN)),,-Werror) -pedantic \
                  -Wshadow -Wconversion -Wmissing-prototypes
 override REQUIRED_CFLAGS   := $(WARN) -ffp-contract=off
 override REQUIRED_CPPFLAGS := -D_POSIX_C_SOURCE=200809L -Icommon
@@ -111,7 +111,7 @@ test_group = $(patsubst %/,%,$(dir $(1)))
 $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(COMMON_OBJ) $(SUPPORT_OBJ) \
                   $$(call lesson_objs,$$(call test_group,$$*))
 	@mkdir -p $(@D)
-	$(LINK) $^ -o $@ $(CMOCKA_LIBS) $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
+	$(LINK) $^ -o $@ -Wl,--wrap=_cmocka_run_group_tests $(CMOCKA_LIBS) $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 
 # A lesson's extras/ include its taught header as "raster.h", as its own files do.
 # ($* is the stem of the compile rule, lessons/NN_name/...)
@@ -230,35 +230,52 @@ valgrind: $(BINS)
 
 # ---- Classroom: hand a lesson out, grade it (docs/teaching.md) -------------
 #
-#   make handout LESSON=03 [DEST=dir] [ONLY=1]
+#   make handout LESSON=03 [DEST=dir] [ONLY=1] [EARLIER=solved|stubbed|absent]
 #       the student's tree: lesson 03 with each solution region replaced by
-#       its stub and a TODO(student) hint (scripts/handout.sh); ONLY=1 leaves
-#       the other lessons out. DEST defaults to $(BUILD)/handout/<lesson>.
+#       its stub and a TODO(student) hint (scripts/handout.sh); ONLY=1 (or
+#       EARLIER=absent) leaves the other lessons out, EARLIER=stubbed takes
+#       their regions out too. DEST defaults to $(BUILD)/handout/<lesson>.
 #   make grade [LESSON=NN] [TEST=name] [TIME_LIMIT=seconds]
 #       runs the lessons' tests, each under a time limit (10 s by default),
 #       prints a score table with the points of tests/<lesson>/points.txt and
 #       writes $(BUILD)/grade/results.json in Gradescope's format (the test
 #       programs run GRADE_JOBS at a time, the number of cores by default). TEST=name
 #       grades one test; the exit status then says if it passed.
-GRADE_LESSONS := $(if $(LESSON),$(filter $(LESSON)%,$(LESSONS)),$(LESSONS))
+# Without LESSON=, the lessons that have a points file: a handout keeps a
+# lesson whose program its tests run, but not that lesson's tests.
+GRADE_LESSONS := $(if $(LESSON),$(filter $(LESSON)%,$(LESSONS)),\
+                   $(foreach l,$(LESSONS),$(if $(wildcard tests/$(l)/points.txt),$(l))))
 GRADE_TESTS   := $(patsubst tests/%.c,$(BUILD)/tests/%,\
                    $(foreach l,$(GRADE_LESSONS),$(wildcard tests/$(l)/test_*.c)))
 
-.PHONY: handout grade grade-build
+.PHONY: handout grade grade-build autograder classroom
+
+#   make autograder LESSON=NN   the Gradescope autograder zip of one lesson
+#       ($(BUILD)/autograder/<lesson>.zip: setup.sh, run_autograder, the series)
+autograder:
+	@sh scripts/autograder.sh --build "$(BUILD)" "$(LESSON)"
+
+#   make classroom LESSON=NN [DEST=file]   GitHub Classroom's autograding tests,
+#       .github/classroom/autograding.json: one per test with points
+classroom:
+	@sh scripts/classroom.sh $(if $(DEST),--dest "$(DEST)") "$(LESSON)"
 
 handout:
 	@sh scripts/handout.sh --build "$(BUILD)" $(if $(filter 1,$(ONLY)),--only) \
+	    $(if $(EARLIER),--earlier "$(EARLIER)") \
 	    $(if $(DEST),--dest "$(DEST)") "$(LESSON)"
 
 # Student code that does not compile costs the points of the tests that need
 # it, not the grade: the build goes on past errors (-k), and grade.sh scores
-# whatever was built. What an earlier build left is removed first, so that a
+# whatever was built. Warnings are shown but not errors here (GRADE_WARNINGS_SHOWN=1
+# takes -Werror out of this one build): an unused parameter must not be a zero.
+# The compiler's messages go into results.json, for the student to read. What an earlier build left is removed first, so that a
 # test never runs an old build of the code.
 grade:
 	@test -n "$(GRADE_LESSONS)" || { echo "grade: error: no lesson LESSON=$(LESSON) in lessons/" >&2; exit 2; }
 	@mkdir -p $(BUILD)/grade
 	@rm -f $(GRADE_TESTS) $(GRADE_LESSONS:%=$(BUILD)/bin/%)
-	@$(MAKE) --no-print-directory -k grade-build >$(BUILD)/grade/build.log 2>&1 || \
+	@$(MAKE) --no-print-directory -k grade-build GRADE_WARNINGS_SHOWN=1 >$(BUILD)/grade/build.log 2>&1 || \
 	    { cat $(BUILD)/grade/build.log; echo "grade: the build failed (above): what did not build scores 0"; }
 	@sh scripts/grade.sh --build "$(BUILD)" $(if $(TIME_LIMIT),--time-limit "$(TIME_LIMIT)") \
 	    $(if $(TEST),--test "$(TEST)") $(GRADE_LESSONS)

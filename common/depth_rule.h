@@ -5,7 +5,7 @@
  *
  *   lesson  buffer          stored value  index     nearer is
  *   01      "y-buffer"      "y"           segment   larger   (y > stored wins)
- *   02, 03  "depth buffer"  "d"           face      smaller  (d < stored wins)
+ *   02, 03  "depth buffer"  "d"           face      smaller  (smaller d wins) 
  *   04      "depth buffer"  "1/d"         face      larger   (1/d > stored wins)
  *
  * A tool never converts the stored value: it shows what the buffer holds, so

@@ -5,16 +5,22 @@
 #   (make grade [LESSON=NN] builds the tests, then calls it)
 #
 # Points come from tests/<lesson>/points.txt, one test a line:
-#     <test name>  <points>  <what it checks>
-# (# starts a comment). A test that the file does not list still runs and is
-# shown, but counts 0 points; a listed test that never ran (its binary did not
-# build, or no binary has it) scores 0.
+#     <test name>  <points>  [visible|hidden|after_due_date|after_published]  <what it checks>
+# (# starts a comment; the visibility is Gradescope's, visible by default). A
+# test that the file does not list still runs and is shown, but counts 0
+# points; a listed test that never ran (its binary did not build, or no
+# binary has it) scores 0.
 #
-# Each test binary first runs whole, under a time limit. Any listed test it
-# did not finish (the binary crashed or hung in it or before it) then runs
-# alone (TEST_FILTER, see tests/support/test_hooks.c), under the per-test
-# limit: a crash or a hang costs the points of the test it happens in, not
-# the whole grade.
+# Every test runs alone, in a process of its own (TEST_FILTER), under the
+# time limit: a crash, an exit or a hang costs the points of that test only.
+# Whether it passed is never read from what it printed: the process runs the
+# student's code, which can print anything. It is the exit status and a line
+# with a number drawn at random for that run, which only the test framework
+# writes, into a file of its own, after cmocka has run the test to its end
+# (tests/support/test_hooks.c; docs/teaching.md says what this guards
+# against and what it does not). UPDATE_EXPECTED is taken out of the
+# environment, and the tests never update an expected image while graded.
+# TOTAL_TIME_LIMIT=seconds bounds the whole grading.
 #
 # Writes DIR/grade/results.json in the format of the Gradescope autograder
 # (tests[] with name, score, max_score, status, output; the overall score),
@@ -52,50 +58,34 @@ jobs=${GRADE_JOBS:-$(nproc 2>/dev/null || getconf _NPROCESSORS_ONLN 2>/dev/null 
 case $jobs in
     ''|*[!0-9]*|0) jobs=1 ;;
 esac
-# A whole binary may take as long as a few of its tests: it only decides how
-# soon the tests it did not finish are run one by one.
-binary_limit=$((limit * 3))
 
 time_limit="$build/tools/time_limit"
 [ -x "$time_limit" ] || { echo "$prog: error: $time_limit is missing (make tools builds it)" >&2; exit 1; }
 gdir="$build/grade"
 mkdir -p "$gdir" || exit 1
 start=$(date +%s)
+# TOTAL_TIME_LIMIT=seconds: the whole grading ends by then, whatever the code
+# does (a test started later gets what is left; none starts after it).
+total_limit=${TOTAL_TIME_LIMIT:-}
+case $total_limit in
+    '') GRADE_DEADLINE="" ;;
+    *[!0-9]*) echo "$prog: error: TOTAL_TIME_LIMIT=$total_limit: want whole seconds" >&2; exit 2 ;;
+    *) GRADE_DEADLINE=$((start + total_limit)) ;;
+esac
+# GRADE_DEADLINE_AT=seconds since the epoch: the same, set by the caller
+# (the autograder, which counts the build too).
+case ${GRADE_DEADLINE_AT:-} in
+    ''|*[!0-9]*) ;;
+    *) if [ -z "$GRADE_DEADLINE" ] || [ "$GRADE_DEADLINE_AT" -lt "$GRADE_DEADLINE" ]; then
+           GRADE_DEADLINE=$GRADE_DEADLINE_AT
+       fi ;;
+esac
+# Where each run's nonce and result files go: a directory of random name.
+GRADE_PRIVATE=$(mktemp -d "${TMPDIR:-/tmp}/grade.XXXXXXXXXX") || { echo "$prog: error: no temporary directory" >&2; exit 1; }
+trap 'rm -rf "$GRADE_PRIVATE"' EXIT
+export GRADE_DEADLINE GRADE_PRIVATE GRADE_LIMIT="$limit" GRADE_BUILD="$build" GRADE_OUTPUT="$build/test-output/grade"
+rm -rf "$GRADE_OUTPUT"
 export BIN_DIR="$build/bin" TOOL_DIR="$build/tools" TEST_OUTPUT="$build/test-output"
-
-# Reads a test binary's log (cmocka's standard output, stdout and stderr in
-# one file); writes each test's lines to OUT/<test>.out and prints
-#   R <tab> test <tab> pass|fail|skip   for each test that finished,
-#   S <tab> test                        for one that started and never finished,
-#   D                                   when the run ended with cmocka's summary.
-parse_log() { # parse_log LOG OUTDIR
-    mkdir -p "$2"
-    awk -v out="$2" '
-        function finish(how) {
-            printf "R\t%s\t%s\n", current, how
-            close(out "/" current ".out")
-            current = ""
-        }
-        /^\[ RUN      \] / {
-            if (current != "") printf "S\t%s\n", current
-            current = substr($0, 14)
-            done = 0
-            print $0 > (out "/" current ".out")
-            next
-        }
-        current != "" {
-            print $0 > (out "/" current ".out")
-            if ($0 == "[       OK ] " current) finish("pass")
-            else if ($0 == "[  FAILED  ] " current || $0 == "[  ERROR   ] " current) finish("fail")
-            else if ($0 == "[  SKIPPED ] " current) finish("skip")
-            next
-        }
-        /^\[==========\] [0-9]+ test\(s\) run\.$/ { done = 1 }
-        END {
-            if (current != "") printf "S\t%s\n", current
-            if (done) print "D"
-        }' "$1"
-}
 
 # What a status of time_limit says about a run that did not finish a test.
 why_unfinished() { # why_unfinished STATUS
@@ -133,6 +123,14 @@ json_awk='
         return "\"" out "\""
     }'
 
+# What the compiler said (errors and warnings, with their source lines), for
+# the student: make grade writes the build's output to build.log.
+compiler="$gdir/compiler.txt"
+: >"$compiler"
+if [ -f "$gdir/build.log" ]; then
+    LC_ALL=C grep -E ': (fatal error|error|warning|note):|^ +[0-9]* \| |^ +\| ' "$gdir/build.log" |
+        head -n 200 | LC_ALL=C tr -d '\000' | LC_ALL=C tr '\200-\377' '?' >"$compiler"
+fi
 tests_json="$gdir/tests.json.part"
 summary="$gdir/summary.txt"
 : >"$tests_json"
@@ -146,7 +144,7 @@ for lesson in "$@"; do
     points="tests/$lesson/points.txt"
     ldir="$gdir/$lesson"
     rm -rf "$ldir"
-    mkdir -p "$ldir/alone"
+    mkdir -p "$ldir"
     if [ ! -f "$points" ]; then
         echo "$prog: error: $points is missing: it gives each test of $lesson its points (see docs/teaching.md)" >&2
         status=1
@@ -156,8 +154,11 @@ for lesson in "$@"; do
     if ! awk -v file="$points" '
         /^[ \t]*(#|$)/ { next }
         {
-            name = $1; pts = $2
+            name = $1; pts = $2; vis = "visible"
             what = $0; sub(/^[ \t]*[^ \t]+[ \t]+[^ \t]+[ \t]*/, "", what)
+            if ($3 ~ /^(visible|hidden|after_due_date|after_published)$/) {
+                vis = $3; sub(/^[^ \t]+[ \t]*/, "", what)
+            }
             if (name !~ /^[A-Za-z_][A-Za-z0-9_]*$/) { bad = "a test name, a C identifier" }
             else if (pts !~ /^[0-9]+(\.[0-9]+)?$/) { bad = "points: a number, 0 or more" }
             else if (what == "") { bad = "a few words on what the test checks" }
@@ -167,7 +168,7 @@ for lesson in "$@"; do
                 exit 1
             }
             seen[name] = FNR
-            printf "%s\t%s\t%s\n", name, pts, what
+            printf "%s\t%s\t%s\t%s\n", name, pts, what, vis
         }' "$points" >"$ldir/points"; then
         echo "$prog: error: $points is malformed; $lesson not graded" >&2
         status=1
@@ -184,14 +185,13 @@ for lesson in "$@"; do
         mv "$ldir/points.one" "$ldir/points"
     fi
 
-    # Phase 1: every binary whole, GRADE_JOBS at a time (the number of cores
-    # by default, as make test), each under its own time limit; then their
-    # logs are read one by one, in the same order as ever.
-    : >"$ldir/results"     # test <tab> pass|fail|skip <tab> binary
-    : >"$ldir/unfinished"  # test <tab> binary <tab> status
-    : >"$ldir/incomplete"  # binary <tab> status: binaries that did not finish
-    : >"$ldir/whole"       # the binaries phase 1 runs
     missing=""
+    export GRADE_LDIR="$ldir" GRADE_LESSON="$lesson"
+    # Which program has which test: each built program lists its tests
+    # (GRADE_LIST=1, test_hooks.c), running none. A list only says where to
+    # look: a test's result never comes from what a program prints.
+    : >"$ldir/where"       # test <tab> binary
+    : >"$ldir/bins"
     for src in tests/"$lesson"/test_*.c; do
         [ -f "$src" ] || continue
         bin=$(basename "$src" .c)
@@ -200,55 +200,81 @@ for lesson in "$@"; do
             missing="$missing $bin"
             continue
         fi
-        if [ -n "$only_test" ]; then
-            printf '%s\t-\n' "$bin" >>"$ldir/incomplete" # phase 2 runs the one test
-            continue
-        fi
-        echo "$bin" >>"$ldir/whole"
+        echo "$bin" >>"$ldir/bins"
+        GRADE_LIST=1 TEST_FILTER="" "$time_limit" "$limit" "$exe" 2>/dev/null |
+            LC_ALL=C sed -n 's/^GRADE_LIST \([A-Za-z_][A-Za-z0-9_]*\)$/\1/p' |
+            while read -r t; do printf '%s\t%s\n' "$t" "$bin"; done >>"$ldir/where"
     done
+    # The runs: each listed test (and each test a program lists) alone, in
+    # each program that lists it.
+    : >"$ldir/jobs"
+    { cut -f1 "$ldir/points"; cut -f1 "$ldir/where"; } | awk '!seen[$0]++' | while read -r name; do
+        if [ -n "$only_test" ] && [ "$name" != "$only_test" ]; then continue; fi
+        # (and in each program that listed nothing: it could not say)
+        bins=$(awk -F '\t' -v t="$name" 'FILENAME == ARGV[1] { if ($1 == t) print $2; listed[$2] = 1; next }
+                                          !($1 in listed) { print $1 }' "$ldir/where" "$ldir/bins")
+        for bin in $bins; do printf '%s %s\n' "$bin" "$name"; done
+    done >"$ldir/jobs"
+    mkdir -p "$ldir/run"
     # shellcheck disable=SC2016 # expanded by the inner sh
-    [ -s "$ldir/whole" ] && xargs -n 1 -P "$jobs" sh -c '
-        TEST_FILTER="" "$0" "$1" "$2/$4" >"$3/$4.log" 2>&1
-        echo $? >"$3/$4.status"' "$time_limit" "$binary_limit" "$build/tests/$lesson" "$ldir" \
-        <"$ldir/whole"
-    while read -r bin; do
-        st=$(cat "$ldir/$bin.status" 2>/dev/null || echo 127)
-        parse_log "$ldir/$bin.log" "$ldir/out/$bin" >"$ldir/$bin.parsed"
-        awk -F '\t' -v bin="$bin" -v st="$st" '
-            $1 == "R" { printf "%s\t%s\t%s\n", $2, $3, bin >> results }
-            $1 == "S" { printf "%s\t%s\t%s\n", $2, bin, st >> unfinished }
-            $1 == "D" { done = 1 }
-            END { if (!done || st >= 124) printf "%s\t%s\n", bin, st >> incomplete }' \
-            results="$ldir/results" unfinished="$ldir/unfinished" incomplete="$ldir/incomplete" \
-            "$ldir/$bin.parsed"
-    done <"$ldir/whole"
+    [ -s "$ldir/jobs" ] && xargs -n 2 -P "$jobs" sh -c '
+        bin=$1 name=$2
+        out="$GRADE_LDIR/run/$bin.$name"
+        now=$(date +%s)
+        lim=$GRADE_LIMIT
+        if [ -n "$GRADE_DEADLINE" ]; then
+            left=$((GRADE_DEADLINE - now))
+            [ "$left" -lt "$lim" ] && lim=$left
+        fi
+        if [ "$lim" -le 0 ]; then
+            : >"$out.log"; echo "budget 0" >"$out.verdict"; exit 0
+        fi
+        d=$(mktemp -d "$GRADE_PRIVATE/run.XXXXXXXX") || exit 0
+        nonce=$(od -An -N16 -tx1 /dev/urandom | tr -d " \n")
+        echo "$nonce" >"$d/n"
+        # Its own TEST_OUTPUT: tests of one program run side by side here,
+        # and their scratch files must not meet.
+        mkdir -p "$GRADE_OUTPUT/$bin.$name"
+        env -u UPDATE_EXPECTED TEST_OUTPUT="$GRADE_OUTPUT/$bin.$name" \
+            TEST_FILTER="$name" GRADE_NONCE_FILE="$d/n" GRADE_RESULT_FILE="$d/r" \
+            "$0" "$lim" "$GRADE_BUILD/tests/$GRADE_LESSON/$bin" >"$out.log" 2>&1 </dev/null
+        st=$?
+        r=$(cat "$d/r" 2>/dev/null)
+        rm -rf "$d"
+        if [ "$r" = "$nonce passed $name" ] && [ "$st" -eq 0 ]; then v=pass
+        elif [ "$r" = "$nonce failed $name" ]; then v=fail
+        elif [ "$r" = "$nonce passed $name" ]; then v=fail
+        else v=unfinished; fi
+        echo "$v $st $lim" >"$out.verdict"' "$time_limit" <"$ldir/jobs"
 
-    # Phase 2: each listed test without a result, alone, in each binary that
-    # did not finish, until one has it.
-    cut -f1 "$ldir/points" | while read -r name; do
-        grep -q "^$name	" "$ldir/results" && continue
-        [ -s "$ldir/incomplete" ] || continue
-        cut -f1 "$ldir/incomplete" | while read -r bin; do
-            exe="$build/tests/$lesson/$bin"
-            TEST_FILTER="$name" "$time_limit" "$limit" "$exe" >"$ldir/alone/$bin.$name.log" 2>&1
-            st=$?
-            parse_log "$ldir/alone/$bin.$name.log" "$ldir/alone/$bin" >"$ldir/alone/$bin.$name.parsed"
-            if grep -q "^R	$name	" "$ldir/alone/$bin.$name.parsed"; then
-                how=$(grep "^R	$name	" "$ldir/alone/$bin.$name.parsed" | head -n 1 | cut -f3)
-                mkdir -p "$ldir/out/$bin"
-                cp "$ldir/alone/$bin/$name.out" "$ldir/out/$bin/$name.out"
-                printf '%s\t%s\t%s\n' "$name" "$how" "$bin" >>"$ldir/results"
-                break
-            fi
-            if grep -q "^S	$name\$" "$ldir/alone/$bin.$name.parsed"; then
-                mkdir -p "$ldir/out/$bin"
-                cp "$ldir/alone/$bin/$name.out" "$ldir/out/$bin/$name.out"
-                why_unfinished "$st" >>"$ldir/out/$bin/$name.out"
-                printf '%s\t%s\t%s\n' "$name" crash "$bin" >>"$ldir/results"
-                break
-            fi
-        done
-    done
+    # The verdicts: a test passes if a program that has it passed it.
+    : >"$ldir/results"     # test <tab> pass|fail|crash <tab> binary
+    while read -r bin name; do
+        read -r v st lim <"$ldir/run/$bin.$name.verdict" 2>/dev/null || { v=unfinished; st=127; lim=$limit; }
+        log="$ldir/run/$bin.$name.log"
+        mkdir -p "$ldir/out/$bin"
+        if grep -q "^$name	pass	" "$ldir/results"; then continue; fi
+        # Bytes that are not plain text (and are not valid UTF-8 in JSON) as "?".
+        LC_ALL=C tr -d '\000' <"$log" | LC_ALL=C tr '\200-\377' '?' >"$ldir/out/$bin/$name.out"
+        case $v in
+            pass|fail) how=$v ;;
+            budget) how=crash
+                echo "not run: the time for the whole grading ran out" >>"$ldir/out/$bin/$name.out" ;;
+            *) how=crash
+               if [ "$st" -eq 0 ]; then
+                   echo "the test program ended before this test finished (exit() or _exit() in the code?)" >>"$ldir/out/$bin/$name.out"
+               elif [ "$st" -eq 124 ]; then
+                   echo "did not finish within $lim s: an endless loop? (TIME_LIMIT=$limit)" >>"$ldir/out/$bin/$name.out"
+               else
+                   why_unfinished "$st" >>"$ldir/out/$bin/$name.out"
+               fi ;;
+        esac
+        if grep -q "^$name	" "$ldir/results"; then
+            [ "$how" = pass ] || continue
+            grep -v "^$name	" "$ldir/results" >"$ldir/results.tmp"; mv "$ldir/results.tmp" "$ldir/results"
+        fi
+        printf '%s\t%s\t%s\n' "$name" "$how" "$bin" >>"$ldir/results"
+    done <"$ldir/jobs"
 
     # The table, and this lesson's entries of results.json.
     echo "$prog: $lesson (points from $points)"
@@ -256,7 +282,13 @@ for lesson in "$@"; do
         echo "  these test programs did not build, their tests score 0:$missing (see $gdir/build.log)"
     awk -F '\t' -v lesson="$lesson" -v ldir="$ldir" -v missing="$missing" \
         -v first="$first_test" -v tests_json="$tests_json" -v summary="$summary" \
-        -v points_file="$points" "$json_awk"'
+        -v points_file="$points" -v compiler="$compiler" "$json_awk"'
+        function compiler_errors(    l, s, n) {
+            s = ""
+            while ((getline l < compiler) > 0) if (l ~ /error:/ && n++ < 20) s = s "\n" l
+            close(compiler)
+            return s == "" ? "" : "\nthe compiler said:" s
+        }
         function output_of(name, bin,    f, l, s) {
             f = ldir "/out/" bin "/" name ".out"
             s = ""
@@ -265,9 +297,9 @@ for lesson in "$@"; do
             if (length(s) > 6000) s = substr(s, 1, 3000) "\n[...]\n" substr(s, length(s) - 2999)
             return s
         }
-        function entry(name, score, max, status, out) {
-            printf "%s    {\"name\": %s, \"score\": %s, \"max_score\": %s, \"status\": \"%s\", \"output\": %s}",
-                first ? "" : ",\n", json(lesson ": " name), score, max, status, json(out) >> tests_json
+        function entry(name, score, max, status, out, vis) {
+            printf "%s    {\"name\": %s, \"score\": %s, \"max_score\": %s, \"status\": \"%s\", \"visibility\": \"%s\", \"output\": %s}",
+                first ? "" : ",\n", json(lesson ": " name), score, max, status, vis, json(out) >> tests_json
             first = 0
         }
         FILENAME == ldir "/results" {
@@ -282,16 +314,16 @@ for lesson in "$@"; do
             score = ok ? max : 0
             got += score; all += max
             if (name in how) out = output_of(name, bin[name])
-            else out = "this test did not run: " (missing != "" ? "some test programs did not build (" missing " )" : "no test program of " lesson " has it (renamed? see " points_file ")") "\n"
+            else out = "this test did not run: " (missing != "" ? "some test programs did not build (" missing " )" compiler_errors() : "no test program of " lesson " has it (renamed? see " points_file ")") "\n"
             if (!ok) out = out "This test checks: " what "\n"
-            entry(name, score, max, ok ? "passed" : "failed", out)
+            entry(name, score, max, ok ? "passed" : "failed", out, $4 == "" ? "visible" : $4)
             printf "  %-4s %6s  %s\n", ok ? "PASS" : "FAIL", sprintf("%g/%g", score, max), name
             if (!ok) printf "              checks: %s\n", what
             if (how[name] == "crash") printf "              %s\n", last_line
         }
         END {
             for (k = 1; k <= norder; k++) if (!((name = order[k]) in listed)) {
-                entry(name, 0, 0, how[name] == "pass" ? "passed" : "failed", output_of(name, bin[name]) "(not in " points_file ": counts 0 points)\n")
+                entry(name, 0, 0, how[name] == "pass" ? "passed" : "failed", output_of(name, bin[name]) "(not in " points_file ": counts 0 points)\n", "visible")
                 printf "  %-4s %6s  %s  (not in %s: 0 points)\n", how[name] == "pass" ? "pass" : "fail", "-", name, points_file
             }
             printf "  %s: %g/%g\n", lesson, got, all
@@ -318,10 +350,13 @@ fi
 
 elapsed=$(($(date +%s) - start))
 results="$gdir/results.json"
-awk -v score="$total" -v elapsed="$elapsed" -v summary="$summary" -v parts="$tests_json" "$json_awk"'
+awk -v score="$total" -v elapsed="$elapsed" -v summary="$summary" -v parts="$tests_json" -v compiler="$compiler" "$json_awk"'
     BEGIN {
         out = ""
         while ((getline l < summary) > 0) out = out l "\n"
+        c = ""
+        while ((getline l < compiler) > 0) c = c l "\n"
+        if (c != "") out = out "\nThe compiler said (warnings do not cost points here, but read them):\n" c
         printf "{\n  \"score\": %s,\n  \"execution_time\": %d,\n  \"visibility\": \"visible\",\n", score, elapsed
         printf "  \"output\": %s,\n  \"tests\": [\n", json(out)
         while ((getline l < parts) > 0) print l

@@ -37,12 +37,14 @@ die() {
 }
 
 only=0
+earlier=""
 dest=""
 build=build
 lesson=""
 while [ $# -gt 0 ]; do
     case $1 in
         --only) only=1 ;;
+        --earlier) [ $# -ge 2 ] || usage "--earlier wants solved, stubbed or absent"; earlier=$2; shift ;;
         --dest) [ $# -ge 2 ] || usage "--dest wants a directory"; dest=$2; shift ;;
         --build) [ $# -ge 2 ] || usage "--build wants a directory"; build=$2; shift ;;
         -*) usage "unknown option $1" ;;
@@ -51,6 +53,14 @@ while [ $# -gt 0 ]; do
     shift
 done
 [ -n "$lesson" ] || usage "which lesson? e.g. LESSON=03"
+# The other lessons: as they are (solved), with their own regions taken out
+# too (stubbed), or left out (absent; --only says the same).
+case $earlier in
+    '') [ "$only" -eq 1 ] && earlier=absent || earlier=solved ;;
+    absent) only=1 ;;
+    solved|stubbed) [ "$only" -eq 0 ] || usage "--only leaves the other lessons out: not with EARLIER=$earlier" ;;
+    *) usage "EARLIER=$earlier: want solved, stubbed or absent" ;;
+esac
 [ -f Makefile ] && [ -d lessons ] && [ -d common ] ||
     usage "run it from the top of the series (where the Makefile is)"
 
@@ -109,6 +119,9 @@ for f in Makefile README.md .gitignore .editorconfig common scripts tools tests 
     if [ -e "$f" ]; then copy "$f"; fi
 done
 rm -rf "$tmp/tests/tools" "$tmp/tests/bench/limit.c"
+# The teacher's material: the guide (it names every answer), the answer key
+# and anything else under teacher/, never in a student's tree.
+rm -rf "$tmp/teacher" "$tmp/docs/teaching.md"
 # The diffs between lessons (docs/diffs/02_to_03.diff) show this lesson's code.
 if [ -d "$tmp/docs/diffs" ]; then
     find "$tmp/docs/diffs" -name "*${number}[_.]*" -exec rm -f {} + || die "cannot leave out docs/diffs"
@@ -124,6 +137,21 @@ case " $marked " in
         awk -v mode=strip -f "$awk_regions" "docs/$name.md" >"$tmp/docs/$name.md" ||
             die "cannot write the handout of docs/$name.md" ;;
 esac
+
+# EARLIER=stubbed: every other lesson with regions gets them taken out too
+# (its page as well), so that a later lesson's handout does not solve an
+# earlier one.
+if [ "$earlier" = stubbed ]; then
+    for d in lessons/*; do
+        [ -d "$d" ] || continue
+        other=${d#lessons/}
+        [ "$other" = "$name" ] && continue
+        for f in $(find "$d" -type f | sort) docs/"$other".md; do
+            [ -f "$f" ] && grep -Eq 'SOLUTION (BEGIN|STUB|END)' "$f" || continue
+            awk -v mode=strip -f "$awk_regions" "$f" >"$tmp/$f" || die "cannot write the handout of $f"
+        done
+    done
+fi
 
 # --only: out go the other lessons, with everything named after them: their
 # tests, expected images, pages, pictures (docs/images/02_*), fuzz targets.
@@ -193,11 +221,46 @@ leaks=$(awk -v lines="$lines" -v files="$files" -v root="$tmp" '
             close(root "/" f)
         }
     }')
-rm -f "$files"
-rm -f "$lines"
-[ -z "$leaks" ] || die "a line of a solution region is in the handout:
+[ -z "$leaks" ] || { rm -f "$files" "$lines"; die "a line of a solution region is in the handout:
 $leaks
-Widen the region, or change the line outside it; nothing was written."
+Widen the region, or change the line outside it; nothing was written."; }
+
+# The same, inside prose and comments: each solution expression (a solution
+# line, or what it computes: after its "return" or "="), with all white space
+# taken out, searched for in every file with its white space taken out too
+# (and the "*", "//", "#" and ">" that begin the lines of comments and
+# quotes). A comment that states the formula gives it away as surely as code.
+exprs="$tmp.exprs"
+# shellcheck disable=SC2086
+awk -v mode=exprs -f "$awk_regions" $sources >"$exprs" || die "cannot list the solution expressions"
+leaks=$(awk -v exprs="$exprs" -v files="$files" -v root="$tmp" '
+    BEGIN {
+        while ((getline l < exprs) > 0) {
+            tab = index(l, "\t")
+            n++; where[n] = substr(l, 1, tab - 1); expr[n] = substr(l, tab + 1)
+        }
+        while ((getline f < files) > 0) {
+            text = ""; line_no = 0; delete starts
+            while ((getline l < (root "/" f)) > 0) {
+                line_no++
+                sub(/^[ \t]*(\/\/|\*+|#+|>+)?/, "", l)
+                gsub(/[ \t\r]+/, "", l)
+                starts[line_no] = length(text) + 1
+                text = text l
+            }
+            close(root "/" f)
+            for (k = 1; k <= n; k++) {
+                at = index(text, expr[k])
+                if (at == 0) continue
+                for (ln = line_no; ln > 1 && starts[ln] > at; ln--) ;
+                printf "  %s:%d has %s (%s)\n", f, ln, where[k], expr[k]
+            }
+        }
+    }')
+rm -f "$files" "$lines" "$exprs"
+[ -z "$leaks" ] || die "a solution expression is in the handout (white space aside):
+$leaks
+Say what to compute and why in words, not the formula; nothing was written."
 
 echo "handout of lessons/$name, made by make handout" >"$tmp/.handout"
 rm -rf "$dest"
@@ -207,7 +270,7 @@ tmp=""
 todos=$(cd "$dest" && grep -rn 'TODO(student):' "lessons/$name" "docs/$name.md" 2>/dev/null || true)
 count=$(echo "$todos" | grep -c . || true)
 echo "$prog: wrote $dest: lessons/$name with $count solution region(s) taken out$(
-    [ "$only" -eq 1 ] && echo ", no other lesson")"
+    case $earlier in absent) echo ", no other lesson" ;; stubbed) echo ", the other lessons stubbed too" ;; esac)"
 echo "$todos" | sed 's/^/  /'
 if [ -n "$needed" ]; then
     echo "$prog: kept, as they are, the lessons whose programs its tests run:$needed"

@@ -27,6 +27,13 @@
 #            significant) and is not also a line outside the regions (or in a
 #            stub) of any of the files read. "code" is the line as code_of
 #            gives it: the form make handout looks for in the handout.
+#   exprs    prints "FILE:LINE<TAB>expr" for each solution expression: a
+#            solution line, and the expression it computes (what follows its
+#            "return" or its "="), with all white space taken out, when it is
+#            at least MIN_EXPR characters long, has a name in it that is not a
+#            keyword, and is not in the code outside the regions (or a stub).
+#            make handout looks for these anywhere in the handout, prose and
+#            comments included, with white space taken out there too.
 # A malformed marker is reported as "FILE:LINE: ..." on stderr, exit status 1.
 
 function trim(s) {
@@ -136,6 +143,7 @@ FNR == 1 {
             fail("a SOLUTION marker inside a stub: is the stub's closing " CLOSE " missing?")
         if (mode == "strip") stub[++nstub] = line
         outside[code_of(line)] = 1 # the stub is in the handout: its lines give nothing away
+        outside_text = outside_text squeeze(line) "\n"
         next
     }
 
@@ -183,6 +191,40 @@ FNR == 1 {
     }
     if (mode == "strip" || mode == "clean") print line
     outside[code_of(line)] = 1
+    if (OPEN == "/*" && t !~ /^(\/\*|\*|\/\/)/) outside_text = outside_text squeeze(code_of(line)) "\n"
+}
+
+# A line without any white space: how expressions are compared.
+function squeeze(s) {
+    gsub(/[ \t\r\n]+/, "", s)
+    return s
+}
+
+# What a solution line computes: after its "return", or after its "=" (not
+# "==", "<=", ">=", "!="), or the whole line.
+function expr_of(c,    i, rest) {
+    if (c ~ /^return[ \t(]/) return substr(c, 7)
+    for (i = 1; i <= length(c); i++) {
+        if (substr(c, i, 1) != "=") continue
+        if (substr(c, i + 1, 1) == "=" || substr(c, i - 1, 1) ~ /[=<>!+\-*\/]/) { i++; continue }
+        rest = substr(c, i + 1)
+        return rest
+    }
+    return c
+}
+
+function print_exprs(    i, seen, k, cand, n, e) {
+    for (i = 1; i <= nsol; i++) {
+        n = 0
+        cand[++n] = squeeze(sol_code[i])
+        cand[++n] = squeeze(expr_of(sol_code[i]))
+        for (k = 1; k <= n; k++) {
+            e = cand[k]
+            if (length(e) < MIN_EXPR || !significant(e) || (e in seen)) continue
+            seen[e] = 1
+            if (index(outside_text, e) == 0) printf "%s\t%s\n", sol_where[i], e
+        }
+    }
 }
 
 # The solution lines of all the files, once all are read: a line that is
@@ -195,6 +237,7 @@ function print_lines(    i) {
 
 BEGIN {
     MIN_CODE = 8
+    MIN_EXPR = 8
     split("auto bool break case char const continue default do double else enum extern " \
           "false float for goto if inline int long register restrict return short signed " \
           "sizeof static struct switch true typedef union unsigned void volatile while NULL",
@@ -212,4 +255,5 @@ END {
         exit 1
     }
     if (mode == "lines") print_lines()
+    if (mode == "exprs") print_exprs()
 }

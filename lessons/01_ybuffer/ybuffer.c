@@ -63,10 +63,10 @@ int64_t round_half_up(int64_t p, int64_t q)
 
 int segment_y_at(const Segment *s, int x)
 {
-    /* SOLUTION BEGIN: the segment's y at column x: interpolate linearly
-     * between its ends, y = y0 + (y1 - y0) (x - x0) / (x1 - x0), rounded
-     * halves up with round_half_up; a vertical segment shows its nearest
-     * point, max(y0, y1). */
+    /* SOLUTION BEGIN: the segment's y at column x: the y of the straight
+     * line through its two ends, in exact integers (only the fraction needs
+     * rounding: halves up, with round_half_up); a vertical segment shows
+     * only its nearest point. */
     if (s->x0 == s->x1) /* seen from above, a vertical segment shows its nearest point */
         return s->y0 > s->y1 ? s->y0 : s->y1;
     /* Take the left end as (x0, y0), so that the denominator x1 - x0 is positive. */

@@ -9,7 +9,7 @@
  * Conventions (docs/conventions.md, the row of lesson 01):
  *   stored value   the rounded y of the segment that won the column
  *   cleared to     YBUFFER_CLEARED (INT_MIN): every y is nearer than that
- *   a fragment wins when  y > stored   (strict: on a tie the first drawn stays)
+ *   a fragment wins when  its y is nearer (strict: on a tie the first drawn stays)
  *   interpolation  linear along x, rounded to the nearest integer, halves up */
 #ifndef YBUFFER_H
 #define YBUFFER_H
@@ -64,9 +64,9 @@ static inline float y_as_stored(int y)
  * up (2.5 -> 3, -2.5 -> -2), in exact integer arithmetic. */
 int64_t round_half_up(int64_t p, int64_t q);
 
-/* Step 2: the segment's y at column x (x between its ends):
- *   y = y0 + (y1 - y0) * (x - x0) / (x1 - x0), rounded halves up.
- * A vertical segment (x0 == x1) shows only its nearest point: max(y0, y1). */
+/* Step 2: the segment's y at column x (x between its ends): the y of the
+ * line through its ends there, rounded halves up. A vertical segment
+ * (x0 == x1) shows only its nearest point. */
 int segment_y_at(const Segment *s, int x);
 
 /* Step 3: the depth test. Nearer means larger y; strictly larger, so that a

@@ -14,7 +14,7 @@ static const Lesson LESSON = {
     .purpose = "Lesson 02: the z-buffer, with depth interpolated linearly on the screen.",
     .scene = "triangles3",
     .rasterizer = &ZBUFFER,
-    .depth_rule = {"depth buffer", "d", "face", SMALLER_IS_NEARER}, /* d < stored wins */
+    .depth_rule = {"depth buffer", "d", "face", SMALLER_IS_NEARER}, /* the smaller d wins */
     .extras = &EXTRAS,
 };
 

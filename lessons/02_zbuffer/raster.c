@@ -44,8 +44,8 @@ FixedPoint pixel_centre(int x, int y)
     return p;
 }
 
-/* E(a, b, p) = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x):
- * twice the signed area of triangle a, b, p. On this y-down screen it is
+/* The edge function E(a, b, p): the cross product of b - a and p - a, which
+ * is twice the signed area of triangle a, b, p. On this y-down screen it is
  * positive when p lies to the right of a->b as one walks from a to b,
  * seen on the screen, zero on the line through a and b. */
 int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p)
@@ -150,8 +150,8 @@ Barycentric barycentric_weights(int64_t e0, int64_t e1, int64_t e2, double inv_a
     return w;
 }
 
-/* The naive way: d = w0 d0 + w1 d1 + w2 d2, as if d were linear on the screen.
- * It is not: under perspective 1/d is (lesson 03). */
+/* The naive way: d blended from the corners with the weights, as if d were
+ * linear on the screen. It is not: under perspective 1/d is (lesson 03). */
 double interpolate_depth(Barycentric w, double d0, double d1, double d2)
 {
     /* SOLUTION BEGIN: the view depth d at the pixel centre, from the
@@ -166,15 +166,15 @@ double interpolate_depth(Barycentric w, double d0, double d1, double d2)
 }
 
 /* The z-buffer test: the fragment wins when it is nearer than what the pixel
- * holds, d < stored. A tie keeps the face drawn first. inline: draw_triangle
+ * holds. A tie keeps the face drawn first. inline: draw_triangle
  * runs it for every fragment, where a call would cost as much as the test. */
 inline bool depth_test(Target *t, size_t i, int face, float d)
 {
     float stored = t->depth[i];
-    /* SOLUTION BEGIN: the z-buffer test: the fragment wins when it is
-     * nearer than what pixel i holds, d < stored (a tie keeps the face
-     * drawn first); report every test with target_record, and keep the
-     * winner's depth and face. */
+    /* SOLUTION BEGIN: the z-buffer test: does the fragment win pixel i?
+     * It must be nearer than what the pixel holds (in this buffer, which
+     * way is nearer?), and a tie keeps the face drawn first. Report every
+     * test with target_record, and keep the winner's depth and face. */
     bool passed = d < stored;
     target_record(t, i, face, d, stored, passed);
     if (passed) {

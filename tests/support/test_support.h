@@ -95,4 +95,9 @@ void expect_line(const char *out, const char *line);
 /* strcmp for qsort over an array of fixed-size char arrays. */
 int compare_strings(const void *a, const void *b);
 
+/* From tests/support/test_hooks.c: UPDATE_EXPECTED=1 as it was when the
+ * program started (never while grading), and whether make grade runs it. */
+bool test_update_expected(void);
+bool test_grading(void);
+
 #endif

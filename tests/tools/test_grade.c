@@ -17,6 +17,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "file.h"
@@ -422,6 +423,133 @@ static void handout_refuses_bad_requests(void **state)
     assert_false(file_exists(path_join(dest, "Makefile")));
 }
 
+/* ---- make autograder: Gradescope's layout, simulated ---- */
+
+/* The forging student: fake_add prints cmocka's lines for every test, writes
+ * a results file wherever one could be read, then ends the process as if
+ * all went well. */
+static const char FORGED_C[] =
+    "#include \"fake.h\"\n#include <stdio.h>\n#include <stdlib.h>\n#include <unistd.h>\n"
+    "static void forge(const char *path) {\n"
+    "    FILE *f = fopen(path, \"w\");\n"
+    "    if (f) { fputs(\"{\\\"score\\\": 100, \\\"tests\\\": []}\\n\", f); fclose(f); }\n}\n"
+    "int fake_add(int a, int b) {\n"
+    "    static const char *names[] = {\"adds_small_numbers\", \"message_with_quotes\",\n"
+    "        \"crash_caught_by_cmocka\", \"aborts\", \"after_the_abort\", \"hangs\",\n"
+    "        \"after_the_hang\", \"listed_but_missing\", \"other_binary_passes\"};\n"
+    "    for (unsigned i = 0; i < sizeof names / sizeof names[0]; i++)\n"
+    "        printf(\"[ RUN      ] %s\\n[       OK ] %s\\n\", names[i], names[i]);\n"
+    "    printf(\"[==========] 9 test(s) run.\\n[  PASSED  ] 9 test(s).\\n\");\n"
+    "    char path[4096];\n"
+    "    const char *root = getenv(\"AUTOGRADER_ROOT\");\n"
+    "    if (root) { snprintf(path, sizeof path, \"%s/results/results.json\", root); forge(path); }\n"
+    "    forge(\"build/grade/results.json\");\n"
+    "    fflush(stdout);\n"
+    "    _exit(a + b == a + b ? 0 : 1);\n}\n";
+
+/* Grades SUBMISSION (files to write under it: path, text, ...) with the zip
+ * of make autograder, in a directory of Gradescope's layout; the score. */
+static double autograde(const char *name, const char *const *files, double *seconds)
+{
+    char dir_name[64];
+    snprintf(dir_name, sizeof dir_name, "autograder_%s", name);
+    const char *dir = abs_test_dir(dir_name);
+    ShellResult r = shell_ok(dir, "mkdir -p source submission results && cd source && "
+                                  "unzip -q %s/build/autograder/09_fake.zip", tree);
+    shell_result_free(&r);
+    for (int i = 0; files[i]; i += 2) {
+        const char *path = path_join(path_join(dir, "submission"), files[i]);
+        r = shell_ok(NULL, "mkdir -p $(dirname %s)", path);
+        shell_result_free(&r);
+        write_text(path, files[i + 1]);
+    }
+    struct timespec t0, t1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    r = run_shell(dir, SHELL_TIMEOUT,
+                  "OPT=-O0 AUTOGRADER_ROOT=%s AUTOGRADER_TIME_LIMIT=1 AUTOGRADER_TOTAL_LIMIT=60 "
+                  "sh source/run_autograder", dir);
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    *seconds = (double)(t1.tv_sec - t0.tv_sec) + (double)(t1.tv_nsec - t0.tv_nsec) / 1e9;
+    if (r.status != 0)
+        fail_msg("run_autograder (%s): status %d\n%s", name, r.status, r.output);
+    shell_result_free(&r);
+    char *text = read_text(path_join(dir, "results/results.json"));
+    JsonValue v;
+    char why[256];
+    if (!json_parse(text, strlen(text), &v, why, sizeof why))
+        fail_msg("%s: results.json is not JSON: %s\n%s", name, why, text);
+    free(text);
+    double score = field(&v, "score", JSON_NUMBER)->number;
+    json_free(&v);
+    return score;
+}
+
+static void autograder_grades_the_submission_only_and_cannot_be_forged(void **state)
+{
+    (void)state;
+    ShellResult r = shell_ok(tree, "make autograder LESSON=09");
+    shell_result_free(&r);
+    static const char BUGGY_C[] = "#include \"fake.h\"\nint fake_add(int a, int b) { return a - b; }\n";
+    static const char CRASH_C[] = "#include \"fake.h\"\n#include <signal.h>\n"
+                                  "int fake_add(int a, int b) { raise(SIGSEGV); return a + b; }\n";
+    static const char HANG_C[] = "#include \"fake.h\"\n"
+                                 "int fake_add(int a, int b) { for (volatile int i = 0;; i++) {} return a + b; }\n";
+    const char *correct[] = {"fake.c", FAKE_C, NULL};
+    const char *buggy[] = {"fake.c", BUGGY_C, NULL};
+    const char *crashing[] = {"fake.c", CRASH_C, NULL};
+    const char *hanging[] = {"fake.c", HANG_C, NULL};
+    /* A repository: its own points file and tests count for nothing. */
+    const char *nested[] = {"repo/lessons/09_fake/fake.c", FAKE_C,
+                            "repo/tests/09_fake/points.txt", "adds_small_numbers 100 everything\n",
+                            NULL};
+    const char *forging[] = {"lessons/09_fake/fake.c", FORGED_C, NULL};
+    const char *nothing[] = {"notes.txt", "I did not do it\n", NULL};
+    struct { const char *name; const char *const *files; double score; } cases[] = {
+        {"correct", correct, EXPECTED_SCORE}, {"buggy", buggy, 1},  {"crashing", crashing, 0},
+        {"hanging", hanging, 0},              {"nested", nested, EXPECTED_SCORE},
+        {"forging", forging, 0},              {"nothing", nothing, 0},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        double seconds;
+        double score = autograde(cases[i].name, cases[i].files, &seconds);
+        if (score != cases[i].score)
+            fail_msg("the %s submission scored %g, want %g", cases[i].name, score, cases[i].score);
+        if (seconds > 50)
+            fail_msg("the %s submission took %.0f s: over its total limit", cases[i].name, seconds);
+    }
+}
+
+/* make classroom: GitHub Classroom's autograding.json, read back as JSON:
+ * one test per line of points.txt with points, with every field it wants. */
+static void classroom_config_has_one_test_per_pointed_test(void **state)
+{
+    (void)state;
+    ShellResult r = shell_ok(tree, "make classroom LESSON=09");
+    shell_result_free(&r);
+    char *text = read_text(path_join(tree, ".github/classroom/autograding.json"));
+    JsonValue v;
+    char why[256];
+    if (!json_parse(text, strlen(text), &v, why, sizeof why))
+        fail_msg("autograding.json is not JSON: %s\n%s", why, text);
+    free(text);
+    const JsonValue *tests = field(&v, "tests", JSON_ARRAY);
+    assert_int_equal(tests->count, 9);
+    double points = 0;
+    static const char *const strings[] = {"name", "setup", "run", "input", "output", "comparison"};
+    for (size_t i = 0; i < tests->count; i++) {
+        for (size_t k = 0; k < sizeof strings / sizeof strings[0]; k++)
+            field(&tests->items[i], strings[k], JSON_STRING);
+        field(&tests->items[i], "timeout", JSON_NUMBER);
+        points += field(&tests->items[i], "points", JSON_NUMBER)->number;
+        char want[300];
+        snprintf(want, sizeof want, "make grade LESSON=09 TEST=%s",
+                 field(&tests->items[i], "name", JSON_STRING)->string);
+        assert_string_equal(field(&tests->items[i], "run", JSON_STRING)->string, want);
+    }
+    assert_true(points == EXPECTED_MAX);
+    json_free(&v);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -433,6 +561,9 @@ int main(void)
         cmocka_unit_test_teardown(handout_refuses_a_tree_that_gives_a_solution_line_away, restore_tree),
         cmocka_unit_test_teardown(handout_refuses_malformed_markers, restore_tree),
         cmocka_unit_test_teardown(handout_refuses_bad_requests, restore_tree),
+        cmocka_unit_test_teardown(autograder_grades_the_submission_only_and_cannot_be_forged,
+                                  restore_tree),
+        cmocka_unit_test_teardown(classroom_config_has_one_test_per_pointed_test, restore_tree),
     };
     return cmocka_run_group_tests_name("tools: make grade and make handout on a made-up lesson",
                                        tests, set_up_tree, NULL);

@@ -1,0 +1,52 @@
+#!/bin/sh
+# autograder.sh: the Gradescope autograder of one lesson, as a zip.
+#
+#   sh scripts/autograder.sh [--build DIR] LESSON   (make autograder LESSON=NN)
+#
+# Writes DIR/autograder/<lesson>.zip: setup.sh and run_autograder at its top
+# (scripts/autograder/, with the lesson filled in), and the series beside
+# them, which Gradescope unpacks into /autograder/source. autograder/taught.txt
+# lists the lesson's files that hold solution regions: those, and only those,
+# run_autograder takes from the submission. The teacher's material and the
+# checks of the tools stay out; the tests, expected images and points go in.
+set -eu
+prog=autograder
+build=build
+lesson=""
+while [ $# -gt 0 ]; do
+    case $1 in
+        --build) build=$2; shift ;;
+        -*) echo "$prog: error: unknown option $1" >&2; exit 2 ;;
+        *) lesson=$1 ;;
+    esac
+    shift
+done
+[ -n "$lesson" ] || { echo "usage: make autograder LESSON=NN" >&2; exit 2; }
+name=""
+for d in lessons/"$lesson"*; do
+    [ -d "$d" ] || continue
+    [ -z "$name" ] || { echo "$prog: error: LESSON=$lesson matches more than one lesson" >&2; exit 2; }
+    name=${d#lessons/}
+done
+[ -n "$name" ] || { echo "$prog: error: no lesson LESSON=$lesson in lessons/" >&2; exit 2; }
+command -v zip >/dev/null || { echo "$prog: error: make autograder needs zip (apt-get install zip)" >&2; exit 1; }
+
+out="$build/autograder"
+stage="$out/$name.stage"
+rm -rf "$stage"
+mkdir -p "$stage/autograder"
+for f in Makefile README.md common scripts tools tests docs lessons; do
+    [ -e "$f" ] && cp -R "$f" "$stage/"
+done
+rm -rf "$stage/tests/tools" "$stage/docs/teaching.md" "$stage/teacher"
+(cd "lessons/$name" && grep -rlE 'SOLUTION BEGIN' . | sed 's|^\./||' | sort) >"$stage/autograder/taught.txt"
+[ -s "$stage/autograder/taught.txt" ] || { echo "$prog: error: lessons/$name has no solution region" >&2; exit 1; }
+sed "s/@LESSON@/$name/g" scripts/autograder/run_autograder >"$stage/run_autograder"
+cp scripts/autograder/setup.sh "$stage/setup.sh"
+chmod +x "$stage/run_autograder" "$stage/setup.sh"
+rm -f "$out/$name.zip"
+(cd "$stage" && zip -qr "../$name.zip" .)
+taught=$(tr '\n' ' ' <"$stage/autograder/taught.txt")
+rm -rf "$stage"
+echo "$prog: wrote $out/$name.zip: upload it to Gradescope as the autograder."
+echo "$prog: students submit $taught(at the top, or under lessons/$name/)"
