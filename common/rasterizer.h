@@ -19,8 +19,7 @@ typedef struct {
     const ScreenVertex *v; /* its n corners: x, y in pixels, view depth d */
     const Tri *tris;       /* its n - 2 triangles, as corner numbers into v */
     bool convex;           /* a convex polygon: may be drawn whole (lesson 04) */
-    const Vec4 *clip;      /* its corners in clip space, parallel to v (lesson 05); NULL
-                              for a face made on the screen (tests, tools) */
+    const Vec4 *clip;      /* the corners in clip space (lesson 05), or NULL if made on screen */
 } ScreenFace;
 
 /* What draw_face needs besides the target and the face. */
@@ -36,11 +35,7 @@ typedef struct {
     /* A stored value back as view depth d (--depth-out, --shade depth); NULL
      * when the buffer already holds d. */
     double (*stored_to_depth)(float stored);
-    /* Clips at the near and far planes itself (lesson 05): render_faces hands
-     * it every face but one wholly behind the near plane, of which clipping
-     * leaves nothing. False: lessons 02-04's rule, a face with a corner at
-     * d <= near is dropped whole. */
-    bool clips;
+    bool clips; /* clips itself (05): render_faces drops only faces wholly behind near */
 } Rasterizer;
 
 /* True when every corner's x, y and d is a finite number: draw_face draws

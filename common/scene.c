@@ -514,7 +514,7 @@ static const SceneInfo SCENES[] = {
     {.name = "inside", .build = build_inside,
      .about = "a room seen from inside: floor, walls and a table reach behind the camera",
      .eye = {0, 1.6, 0.5}, .target = {0.4, 1.1, -10}, .up = {0, 1, 0},
-     .fovy = 75, .near = 0.25, .far = 60},
+     .fovy = 60, .near = 0.25, .far = 60},
 };
 
 int scene_count(void)

@@ -6,8 +6,7 @@
 #include "polygon.h"
 #include "scanline.h"
 
-/* How far p lies inside the plane: 0 on it, negative outside. Both are linear
- * in clip space, so they are linear along every edge. */
+/* How far p lies inside the plane: 0 on it, negative outside; linear in clip space. */
 double plane_distance(Vec4 p, ClipPlane plane)
 {
     /* SOLUTION BEGIN: the near plane keeps z_c >= -w_c, the far plane
@@ -20,9 +19,8 @@ double plane_distance(Vec4 p, ClipPlane plane)
     /* SOLUTION END */
 }
 
-/* Where the edge from corner in (d_in > 0) to corner out (d_out < 0) meets
- * the plane. Always worked out from the inside corner, so that two faces that
- * share the edge get the very same point: the edge stays shared. */
+/* Where the edge from in (d_in > 0) to out (d_out < 0) meets the plane; always
+ * from the inside corner, so two faces sharing the edge get the same point. */
 Vec4 plane_crossing(Vec4 in, double d_in, Vec4 out, double d_out)
 {
     /* SOLUTION BEGIN: the fraction of the way from in to out where the
@@ -66,8 +64,7 @@ int clip_to_plane(const Vec4 *in, int n, ClipPlane plane, Vec4 *out)
 int clip_polygon(const Vec4 *in, int n, Vec4 *out)
 {
     Vec4 kept[CLIP_MAX_OUT(CLIP_MAX_IN) / 2];
-    int m = clip_to_plane(in, n, NEAR_PLANE, kept);
-    return clip_to_plane(kept, m, FAR_PLANE, out);
+    return clip_to_plane(kept, clip_to_plane(in, n, NEAR_PLANE, kept), FAR_PLANE, out);
 }
 
 /* The divide by w_c and the viewport, as camera_project does them: a corner
@@ -76,8 +73,7 @@ ScreenVertex clip_to_screen(Vec4 c, int width, int height)
 {
     /* SOLUTION BEGIN: NDC from the divide, then pixels (y down); d is w_c. */
     double x_ndc = c.x / c.w, y_ndc = c.y / c.w;
-    ScreenVertex v = {(x_ndc + 1) * width / 2, (1 - y_ndc) * height / 2, c.w};
-    return v;
+    return (ScreenVertex){(x_ndc + 1) * width / 2, (1 - y_ndc) * height / 2, c.w};
     /* SOLUTION STUB
     (void)c; (void)width; (void)height;
     return (ScreenVertex){0, 0, 0};
@@ -85,8 +81,7 @@ ScreenVertex clip_to_screen(Vec4 c, int width, int height)
     /* SOLUTION END */
 }
 
-/* A convex polygon in clip space: clipped, divided, and drawn by lesson 04
- * (as a fan of triangles if, once snapped, it is not quite convex). */
+/* A convex polygon in clip space: clipped, divided, and drawn by lesson 04. */
 static void draw_clipped_polygon(Target *t, const Vec4 *corners, int n, int face,
                                  const DrawContext *ctx)
 {
@@ -111,17 +106,16 @@ void draw_clipped_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
     for (int i = 0; f->clip && i < f->n; i++)
         cut = cut || !(plane_distance(f->clip[i], NEAR_PLANE) >= 0 &&
                        plane_distance(f->clip[i], FAR_PLANE) >= 0);
-    if (!cut) {
+    if (!cut)
         draw_face(t, f, ctx);
-    } else if (f->convex && f->n <= CLIP_MAX_IN) {
+    else if (f->convex && f->n <= CLIP_MAX_IN)
         draw_clipped_polygon(t, f->clip, f->n, f->face, ctx);
-    } else {
+    else
         for (int k = 0; k < f->n - 2; k++) {
             const int *c = f->tris[k].c;
             Vec4 tri[3] = {f->clip[c[0]], f->clip[c[1]], f->clip[c[2]]};
             draw_clipped_polygon(t, tri, 3, f->face, ctx);
         }
-    }
 }
 
 /* A stored 1/d back as the view depth d; 0 (nothing drawn) is infinitely far. */

@@ -8,9 +8,7 @@
  *                is interpolated linearly in clip space, where that is exact
  *   then         the divide by w_c (> 0 once the near plane has cut), the
  *                viewport, and lesson 04's scanline z-buffer of 1/d, unchanged
- *
- * x and y are not clipped: the guard band (guard_band.h) cuts a polygon that
- * reaches far off the screen. */
+ * x and y are not clipped: the guard band (guard_band.h) does that job. */
 #ifndef CLIP_H
 #define CLIP_H
 

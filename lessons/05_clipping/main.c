@@ -42,7 +42,7 @@ int main(int argc, char **argv)
     int status = run_load(&run, &LESSON, argc, argv); /* load: the command line, the scene */
     if (status != RUN_GO)
         return status;
-    run.rz->clear(&run.target);                        /* clear: clear_depth, 1/d = 0 */
+    run.rz->clear(&run.target);                        /* clear: clear_depth */
     if (run_draw(&run) &&                              /* draw: clip, divide, draw_face */
         run_write(&run))                               /* write: the pictures asked for */
         run_report(&run);                              /* report: the summary and the tools */
