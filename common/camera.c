@@ -104,9 +104,14 @@ Vec3 camera_to_view(const Camera *c, Vec3 world)
     return vec3(v.x, v.y, v.z);
 }
 
+Vec4 camera_to_clip(const Camera *c, Vec3 world)
+{
+    return mat4_mul_vec4(c->view_proj, vec4(world.x, world.y, world.z, 1.0));
+}
+
 ScreenVertex camera_project(const Camera *c, Vec3 world)
 {
-    Vec4 clip = mat4_mul_vec4(c->view_proj, vec4(world.x, world.y, world.z, 1.0));
+    Vec4 clip = camera_to_clip(c, world);
     ScreenVertex sv = {0.0, 0.0, clip.w};                 /* w_clip = d = -z_view */
     if (sv.d > 0) {                                       /* d <= 0: behind the eye, x, y stay 0 */
         double x_ndc = clip.x / clip.w;                   /* x_ndc = x_clip / w_clip */

@@ -35,6 +35,7 @@ bool camera_check(Vec3 eye, Vec3 target, Vec3 up, double fovy_degrees, double ne
 void camera_init(Camera *c, Vec3 eye, Vec3 target, Vec3 up, double fovy_degrees,
                  double near, double far, int width, int height);
 Vec3 camera_to_view(const Camera *c, Vec3 world);
+Vec4 camera_to_clip(const Camera *c, Vec3 world); /* P V (x, y, z, 1): w = d */
 ScreenVertex camera_project(const Camera *c, Vec3 world);
 
 #endif

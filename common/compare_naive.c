@@ -15,7 +15,7 @@ static bool same_path(const char *a, const char *b)
     return a && b && (strcmp(a, b) == 0 || same_file(a, b));
 }
 
-bool compare_naive_path_ok(const Options *opt, const char *path, Error *err)
+bool compare_flag_path_ok(const Options *opt, const char *flag, const char *path, Error *err)
 {
     const char *name[] = {"--obj", "--compare", "--out", "--depth-out", "--overdraw-out",
                           "--id-out", "--world-out"};
@@ -23,13 +23,17 @@ bool compare_naive_path_ok(const Options *opt, const char *path, Error *err)
                            opt->id_out, opt->world_out};
     for (size_t i = 0; i < sizeof name / sizeof name[0]; i++)
         if (same_path(other[i], path))
-            return error_set(err, "%s and --compare-naive both name %s", name[i], path);
+            return error_set(err, "%s and %s both name %s", name[i], flag, path);
     char diff[PATH_TEXT_MAX];
     if (opt->compare && opt->out && compare_diff_path(opt->out, diff, sizeof diff) &&
         same_path(diff, path))
-        return error_set(err, "--compare-naive names %s, where the diff picture of --out goes",
-                         path);
+        return error_set(err, "%s names %s, where the diff picture of --out goes", flag, path);
     return true;
+}
+
+bool compare_naive_path_ok(const Options *opt, const char *path, Error *err)
+{
+    return compare_flag_path_ok(opt, "--compare-naive", path, err);
 }
 
 static bool draw_with(Render *r, const Rasterizer *rz, Target *t, Error *err)

@@ -5,7 +5,10 @@
  * 02's rule). The scene is drawn with each, and the picture of the right one
  * is written with every pixel where the naive rule shows another face (or a
  * face where there is none, or none where there is one) in magenta; every
- * other pixel keeps its colour at half brightness. */
+ * other pixel keeps its colour at half brightness.
+ *
+ * Lesson 05's --compare-drop is the same comparison with other rasterizers:
+ * its clipping one against lesson 04's, which drops a face at the near plane. */
 #ifndef COMPARE_NAIVE_H
 #define COMPARE_NAIVE_H
 
@@ -16,6 +19,8 @@
  * --out, --depth-out, --overdraw-out, --id-out, the diff picture of --compare): false
  * with err set when path names one of them, a usage error. */
 bool compare_naive_path_ok(const Options *opt, const char *path, Error *err);
+/* The same for the picture of another flag (flag: "--compare-drop"). */
+bool compare_flag_path_ok(const Options *opt, const char *flag, const char *path, Error *err);
 
 /* Draws r with both rasterizers, writes the picture to path (colours as opt->shade
  * says) and counts the marked pixels into *differing. r's face counts are

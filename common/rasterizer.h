@@ -19,6 +19,7 @@ typedef struct {
     const ScreenVertex *v; /* its n corners: x, y in pixels, view depth d */
     const Tri *tris;       /* its n - 2 triangles, as corner numbers into v */
     bool convex;           /* a convex polygon: may be drawn whole (lesson 04) */
+    const Vec4 *clip;      /* the corners in clip space (lesson 05), or NULL if made on screen */
 } ScreenFace;
 
 /* What draw_face needs besides the target and the face. */
@@ -34,6 +35,7 @@ typedef struct {
     /* A stored value back as view depth d (--depth-out, --shade depth); NULL
      * when the buffer already holds d. */
     double (*stored_to_depth)(float stored);
+    bool clips; /* clips itself (05): render_faces drops only faces wholly behind near */
 } Rasterizer;
 
 /* True when every corner's x, y and d is a finite number: draw_face draws

@@ -25,6 +25,7 @@ void render_free(Render *r)
 {
     mesh_free(&r->mesh);
     free(r->corners);
+    free(r->clip);
     render_clear(r);
 }
 
@@ -33,10 +34,14 @@ static bool project_corners(Render *r, Error *err)
 {
     int n = r->mesh.ncorners;
     r->corners = malloc((n > 0 ? (size_t)n : 1) * sizeof *r->corners);
-    if (!r->corners)
+    r->clip = malloc((n > 0 ? (size_t)n : 1) * sizeof *r->clip);
+    if (!r->corners || !r->clip)
         return error_set(err, "out of memory projecting %d face corners", n);
-    for (int k = 0; k < n; k++)
-        r->corners[k] = camera_project(&r->camera, r->mesh.verts[r->mesh.corners[k]]);
+    for (int k = 0; k < n; k++) {
+        Vec3 p = r->mesh.verts[r->mesh.corners[k]];
+        r->corners[k] = camera_project(&r->camera, p);
+        r->clip[k] = camera_to_clip(&r->camera, p);
+    }
     return true;
 }
 
@@ -112,7 +117,8 @@ ScreenFace render_screen_face(const Render *r, int i)
 {
     const Face *f = &r->mesh.faces[i];
     ScreenFace sf = {.face = i, .n = f->count, .v = r->corners + f->first,
-                     .tris = r->mesh.tris + f->first_tri, .convex = f->convex};
+                     .tris = r->mesh.tris + f->first_tri, .convex = f->convex,
+                     .clip = r->clip ? r->clip + f->first : NULL};
     return sf;
 }
 
@@ -135,6 +141,20 @@ static DropReason drop_reason(const Render *r, const ScreenFace *f)
     if (!screen_face_is_finite(f))
         return NOT_FINITE;
     return KEEP;
+}
+
+/* Lesson 05's rasterizer clips: only a face wholly behind the near plane
+ * (z_c < -w_c at every corner) is dropped, since clipping leaves nothing. */
+static DropReason clipping_drop_reason(const ScreenFace *f)
+{
+    bool behind = true;
+    for (int k = 0; k < f->n; k++) {
+        Vec4 c = f->clip[k];
+        if (!isfinite(c.x) || !isfinite(c.y) || !isfinite(c.z) || !isfinite(c.w))
+            return NOT_FINITE;
+        behind = behind && c.z < -c.w;
+    }
+    return behind ? BEHIND_NEAR : KEEP;
 }
 
 bool screen_face_is_finite(const ScreenFace *f)
@@ -162,7 +182,7 @@ bool render_faces(Render *r, Target *t, const Rasterizer *rz, const int *order, 
             continue;
         ScreenFace f = render_screen_face(r, i);
         int ntris = f.n - 2;
-        switch (drop_reason(r, &f)) {
+        switch (rz->clips && f.clip ? clipping_drop_reason(&f) : drop_reason(r, &f)) {
         case BEHIND_NEAR:
             r->counts.faces_behind_near++;
             r->counts.tris_behind_near += ntris;

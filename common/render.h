@@ -7,8 +7,9 @@
  *                   every face corner projected to the screen once
  *   render_faces    hands each face, as a ScreenFace, to the lesson's draw_face,
  *                   in mesh order or in an order the lesson gives; drops a whole
- *                   face when a corner has d <= near (docs/conventions.md: clipping
- *                   comes in a later lesson) or a screen position that is not
+ *                   face when a corner has d <= near (docs/conventions.md: lesson
+ *                   05's rasterizer clips instead, and only a face wholly
+ *                   behind the near plane is dropped) or a position that is not
  *                   a finite number, and counts what it drew and dropped
  *   render_write    --out PNG as --shade says (shade.h), --depth-out PFM as
  *                   view depth d, --overdraw-out PGM16, --id-out PNG of face
@@ -49,6 +50,7 @@ typedef struct {
     Camera camera;
     char source[RENDER_SOURCE_MAX]; /* "scene triangles3" or "model.obj" */
     ScreenVertex *corners;          /* every face corner projected, parallel to mesh.corners */
+    Vec4 *clip;                     /* the same corners in clip space (lesson 05 clips them) */
     FaceCounts counts;              /* added up over every render_faces call */
 } Render;
 

@@ -4,8 +4,10 @@
  * position in its build function is its index (--shade id, --trace). Faces
  * wind counter-clockwise seen from outside (or from the camera, for the flat
  * pieces), though the lessons draw both windings. Every vertex of every scene
- * lies in front of its camera's near plane, since lessons 02 to 04 drop a
- * triangle with a corner behind it rather than clip it. */
+ * but the last lies in front of its camera's near plane, since lessons 02 to
+ * 04 drop a triangle with a corner behind it rather than clip it; the last,
+ * inside, is lesson 05's: its camera stands in a room, and much of the room
+ * reaches behind it. */
 #include "scene.h"
 
 #include <math.h>
@@ -425,6 +427,63 @@ static bool build_knot(Mesh *m, Error *err)
     return torus_knot_mesh(m, KNOT_RINGS, KNOT_SIDES, KNOT_TUBE_RADIUS, err);
 }
 
+/* ---- 7. inside ----------------------------------------------------------- */
+
+/* A room with the camera standing in it (lesson 05): floor, ceiling and walls
+ * run from ROOM_BACK, behind the camera, to ROOM_END in front; each is cut in
+ * two at ROOM_SPLIT, so its near half crosses the near plane and its far half
+ * does not. A table and a crate beside the camera and a beam overhead reach
+ * behind it too; two pillars stand wholly in front, and the back wall wholly
+ * behind. */
+#define ROOM_HALF_WIDTH 3.0
+#define ROOM_HEIGHT 3.0
+#define ROOM_BACK 5.0
+#define ROOM_SPLIT (-5.0)
+#define ROOM_END (-15.0)
+
+static bool build_inside(Mesh *m, Error *err)
+{
+    int floor[2] = {material(m, "floor_dark", 0.45, 0.36, 0.28, err),
+                    material(m, "floor_light", 0.6, 0.5, 0.38, err)};
+    int ceiling = material(m, "ceiling", 0.4, 0.4, 0.45, err);
+    int wall[2] = {material(m, "wall_stone", 0.7, 0.66, 0.55, err),
+                   material(m, "wall_brick", 0.65, 0.35, 0.25, err)};
+    int end = material(m, "end_wall", 0.2, 0.45, 0.4, err);
+    int back = material(m, "back_wall", 0.3, 0.3, 0.6, err);
+    int wood = material(m, "table", 0.55, 0.3, 0.12, err);
+    int crate = material(m, "crate", 0.75, 0.6, 0.2, err);
+    int beam = material(m, "beam", 0.35, 0.22, 0.12, err);
+    int pillar = material(m, "pillar", 0.5, 0.5, 0.52, err);
+    if (floor[0] < 0 || floor[1] < 0 || ceiling < 0 || wall[0] < 0 || wall[1] < 0 ||
+        end < 0 || back < 0 || wood < 0 || crate < 0 || beam < 0 || pillar < 0)
+        return false;
+    double w = ROOM_HALF_WIDTH, h = ROOM_HEIGHT;
+    const double z[3] = {ROOM_BACK, ROOM_SPLIT, ROOM_END};
+    for (int k = 0; k < 2; k++) {
+        double z0 = z[k], z1 = z[k + 1];
+        if (!(add_quad(m, vec3(-w, 0, z0), vec3(0, 0, z0), vec3(0, 0, z1), vec3(-w, 0, z1),
+                       floor[k], err) &&
+              add_quad(m, vec3(0, 0, z0), vec3(w, 0, z0), vec3(w, 0, z1), vec3(0, 0, z1),
+                       floor[1 - k], err) &&
+              add_quad(m, vec3(-w, h, z0), vec3(-w, h, z1), vec3(w, h, z1), vec3(w, h, z0),
+                       ceiling, err) &&
+              add_quad(m, vec3(-w, 0, z0), vec3(-w, 0, z1), vec3(-w, h, z1), vec3(-w, h, z0),
+                       wall[k], err) &&
+              add_quad(m, vec3(w, 0, z0), vec3(w, h, z0), vec3(w, h, z1), vec3(w, 0, z1),
+                       wall[1 - k], err)))
+            return false;
+    }
+    return add_quad(m, vec3(-w, 0, ROOM_END), vec3(w, 0, ROOM_END), vec3(w, h, ROOM_END),
+                    vec3(-w, h, ROOM_END), end, err) &&
+           add_quad(m, vec3(-w, 0, ROOM_BACK), vec3(-w, h, ROOM_BACK), vec3(w, h, ROOM_BACK),
+                    vec3(w, 0, ROOM_BACK), back, err) &&
+           add_aligned_box(m, vec3(0.6, 0.0, -3.0), vec3(1.8, 0.9, 2.0), wood, err) &&
+           add_aligned_box(m, vec3(-2.8, 0.0, -1.5), vec3(-1.6, 1.2, 0.8), crate, err) &&
+           add_aligned_box(m, vec3(-0.3, 2.5, ROOM_END), vec3(0.3, 2.8, ROOM_BACK), beam, err) &&
+           add_aligned_box(m, vec3(-1.8, -0.05, -9.3), vec3(-1.2, h + 0.05, -8.7), pillar, err) &&
+           add_aligned_box(m, vec3(1.2, -0.05, -11.3), vec3(1.8, h + 0.05, -10.7), pillar, err);
+}
+
 /* ---- The registry --------------------------------------------------------- */
 
 static const SceneInfo SCENES[] = {
@@ -452,6 +511,10 @@ static const SceneInfo SCENES[] = {
      .about = "a (2,3) torus knot tube of 3072 quads",
      .eye = {0, -5.5, 8.5}, .target = {0, 0, 0}, .up = {0, 1, 0},
      .fovy = 45, .near = 1, .far = 50},
+    {.name = "inside", .build = build_inside,
+     .about = "a room seen from inside: floor, walls and a table reach behind the camera",
+     .eye = {0, 1.6, 0.5}, .target = {0.4, 1.1, -10}, .up = {0, 1, 0},
+     .fovy = 60, .near = 0.25, .far = 60},
 };
 
 int scene_count(void)

@@ -99,3 +99,14 @@ OBJ
 "$build/tools/magnify" "$tmp/two_buffers.png" "$images/04_spans.png" 48 4,0,8,3 8,3,0,3 0,3,4,0
 rm -rf "$tmp"
 echo "make-doc-images: 04_scanline_inverse_z done"
+
+# ---- 05_clipping: the inside scene clipped, as lesson 04 draws it (faces
+# through the near plane dropped), the pixels lesson 04 gets wrong, the
+# no-clip bug, and the depth shading.
+make -s BUILD="$build" "$build/bin/05_clipping" "$build/bin/04_scanline_inverse_z"
+l05="$build/bin/05_clipping"
+"$l05" --out "$images/05_inside.png" --compare-drop "$images/05_inside_compare_drop.png" >/dev/null
+"$build/bin/04_scanline_inverse_z" --scene inside --out "$images/05_inside_as_04.png" >/dev/null
+"$l05" --bug no-clip --out "$images/05_inside_no_clip.png" >/dev/null
+"$l05" --shade depth --out "$images/05_inside_depth.png" >/dev/null
+echo "make-doc-images: 05_clipping done"

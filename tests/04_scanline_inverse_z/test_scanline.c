@@ -494,7 +494,7 @@ static void stepping_along_a_long_span_stays_accurate(void **state)
 
 static ScreenFace face_of(const ScreenVertex *v, int n, const Tri *tris, bool convex)
 {
-    ScreenFace f = {0, n, v, tris, convex};
+    ScreenFace f = {0, n, v, tris, convex, NULL};
     return f;
 }
 

@@ -172,7 +172,7 @@ static int fuzz_rasterizer(const Rasterizer *rz, const uint8_t *data, size_t siz
         }
         for (int k = 0; k < n - 2; k++)
             tris[k] = (Tri){{0, k + 1, k + 2}};
-        ScreenFace f = {face, n, v, tris, (head & 0x80) != 0};
+        ScreenFace f = {face, n, v, tris, (head & 0x80) != 0, NULL};
 
         uint64_t before = t.stats.tested;
         rz->draw_face(&t, &f, &ctx);
