@@ -47,7 +47,7 @@ void clear_depth(Target *t)
     }
 }
 
-/* The depth test of one fragment at pixel i: it wins when inv_d > stored.
+/* The depth test of one fragment at pixel i, on a buffer of 1/d.
  * inline: draw_span runs it for every pixel, where a function call would cost
  * as much as the test itself. */
 inline bool depth_test(Target *t, size_t i, int face, float inv_d)

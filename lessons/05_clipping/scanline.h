@@ -51,7 +51,7 @@ typedef struct {
 
 /* The steps, in the order scanline.c takes them (each is explained there). */
 void clear_depth(Target *t);                              /* 1/d = 0 everywhere */
-bool depth_test(Target *t, size_t i, int face, float inv_d); /* inv_d > stored wins */
+bool depth_test(Target *t, size_t i, int face, float inv_d); /* the nearer 1/d wins */
 bool edge_setup(Edge *e, int64_t ax, int64_t ay, double inv_a, int64_t bx, int64_t by,
                 double inv_b, int y_first);               /* false: no row to walk */
 void edge_step(Edge *e);                                  /* one scanline down */
