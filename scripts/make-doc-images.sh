@@ -99,3 +99,9 @@ OBJ
 "$build/tools/magnify" "$tmp/two_buffers.png" "$images/04_spans.png" 48 4,0,8,3 8,3,0,3 0,3,4,0
 rm -rf "$tmp"
 echo "make-doc-images: 04_scanline_inverse_z done"
+
+# ---- Diagrams drawn by code (tools/diagrams.c): lesson 02's edge functions
+# and top-left rule, lesson 03's d and 1/d along a row, lesson 04's edge walk
+make -s BUILD="$build" "$build/tools/diagrams"
+"$build/tools/diagrams" "$images"
+echo "make-doc-images: diagrams done"
