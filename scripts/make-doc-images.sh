@@ -110,3 +110,9 @@ l05="$build/bin/05_clipping"
 "$l05" --bug no-clip --out "$images/05_inside_no_clip.png" >/dev/null
 "$l05" --shade depth --out "$images/05_inside_depth.png" >/dev/null
 echo "make-doc-images: 05_clipping done"
+
+# ---- Diagrams drawn by code (tools/diagrams.c): lesson 02's edge functions
+# and top-left rule, lesson 03's d and 1/d along a row, lesson 04's edge walk
+make -s BUILD="$build" "$build/tools/diagrams"
+"$build/tools/diagrams" "$images"
+echo "make-doc-images: diagrams done"

@@ -1,0 +1,706 @@
+/* diagrams: the explanatory pictures of lessons 02 to 04, drawn by code.
+ *
+ *   diagrams DIR
+ *
+ * writes three PNGs into DIR (which must exist):
+ *   02_edge_functions.png    900 x 500  a 12 x 8 pixel grid, 40 pixels to a pixel:
+ *                            triangle A with its edge functions' signs, its
+ *                            neighbour B, every pixel centre in or out, and the
+ *                            centres on the shared edge that the top-left rule
+ *                            gives to A
+ *   03_depth_along_a_row.png 820 x 520  d and 1/d of one grazing strip along a
+ *                            screen row: d curved, 1/d straight, naive d dashed
+ *   04_edge_walk.png         820 x 600  a convex polygon on a 12 x 9 grid, its left
+ *                            and right edges crossing each row centre, and the
+ *                            span of row 5
+ * Exit status: 0 written, 1 could not write, 2 bad usage.
+ *
+ * Coverage is decided by the lessons' rule, exactly: corners snapped to 1/256
+ * pixel, integer arithmetic, the top-left rule, here in its scanline form
+ * (docs/04_scanline_inverse_z.md), which covers the same pixels as lesson
+ * 02's edge functions. tests/tools/test_diagrams.c draws the same shapes with
+ * build/bin/02_zbuffer and 04_scanline_inverse_z and reads the pictures back:
+ * what it reads (grid positions, dot colours, the plot's frame and the 1/d
+ * colour) is marked "read by the test" below. */
+#include <math.h>
+#include <stdbool.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "error.h"
+#include "font.h"
+#include "image.h"
+
+#define PROGRAM "diagrams"
+
+/* ---- Colours ---------------------------------------------------------------- */
+
+static const Rgb BACKGROUND = {24, 28, 40};
+static const Rgb GRID_LINE = {62, 68, 86};
+static const Rgb TEXT = {230, 230, 230};
+static const Rgb DIM_TEXT = {170, 174, 186};
+static const Rgb LABEL_BOX = {10, 12, 18};
+static const Rgb HOLLOW = {150, 154, 166};         /* a centre outside: a ring (read by the test) */
+static const Rgb A_DOT = {255, 150, 50};           /* a centre in A (read by the test) */
+static const Rgb A_CELL = {92, 62, 40};
+static const Rgb B_DOT = {80, 170, 255};           /* a centre in B (read by the test) */
+static const Rgb B_CELL = {38, 64, 100};
+static const Rgb SHARED_MARK = {255, 235, 60};
+static const Rgb D_COLOUR = {255, 150, 50};
+static const Rgb INV_D_COLOUR = {90, 220, 255};    /* the 1/d line (read by the test) */
+static const Rgb NAIVE_COLOUR = {200, 200, 200};
+static const Rgb AXIS_COLOUR = {200, 200, 210};
+static const Rgb POLY_CELL = {50, 60, 90};
+static const Rgb IN_DOT = {235, 235, 245};         /* a centre in the polygon (read by the test) */
+static const Rgb SPAN_CELL = {120, 100, 30};
+static const Rgb SPAN_DOT = {255, 235, 60};        /* a centre in the span (read by the test) */
+static const Rgb LEFT_COLOUR = {110, 230, 120};
+static const Rgb RIGHT_COLOUR = {255, 110, 200};
+
+/* ---- Drawing ------------------------------------------------------------------ */
+
+#define TEXT_SCALE 2      /* labels: the 5 x 7 font at twice its size */
+#define MAX_LABEL 96      /* characters in one label line */
+
+static void put(Image *im, int x, int y, Rgb c)
+{
+    if (x >= 0 && y >= 0 && x < im->width && y < im->height)
+        image_set(im, x, y, c);
+}
+
+static void fill_rect(Image *im, int x0, int y0, int x1, int y1, Rgb c)
+{
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++)
+            put(im, x, y, c);
+}
+
+/* The text at scale times the font's size; (x, y) is its top-left pixel. */
+static void text_at(Image *im, int x, int y, const char *text, int scale, Rgb c)
+{
+    if (scale == 1) {
+        draw_text(im, x, y, text, c);
+        return;
+    }
+    uint8_t pixels[FONT_LINE_HEIGHT * MAX_LABEL * FONT_ADVANCE * 3] = {0};
+    Image glyphs = {MAX_LABEL * FONT_ADVANCE, FONT_LINE_HEIGHT, pixels};
+    char line[MAX_LABEL + 1];
+    snprintf(line, sizeof line, "%s", text);
+    draw_text(&glyphs, 0, 0, line, (Rgb){255, 255, 255});
+    for (int gy = 0; gy < glyphs.height; gy++)
+        for (int gx = 0; gx < glyphs.width; gx++)
+            if (image_get(&glyphs, gx, gy).r)
+                fill_rect(im, x + gx * scale, y + gy * scale, x + (gx + 1) * scale,
+                          y + (gy + 1) * scale, c);
+}
+
+static int scaled_width(const char *text, int scale) { return text_width(text) * scale; }
+static int scaled_height(int scale) { return FONT_GLYPH_HEIGHT * scale; }
+
+/* A label on a dark box, so that it reads over grid lines and edges. */
+static void boxed_text(Image *im, int x, int y, const char *text, Rgb c)
+{
+    int pad = 3;
+    fill_rect(im, x - pad, y - pad, x + scaled_width(text, TEXT_SCALE) + pad,
+              y + scaled_height(TEXT_SCALE) + pad, LABEL_BOX);
+    text_at(im, x, y, text, TEXT_SCALE, c);
+}
+
+/* The same, centred on (cx, cy). */
+static void boxed_text_centred(Image *im, double cx, double cy, const char *text, Rgb c)
+{
+    boxed_text(im, (int)lround(cx - scaled_width(text, TEXT_SCALE) / 2.0),
+               (int)lround(cy - scaled_height(TEXT_SCALE) / 2.0), text, c);
+}
+
+static double segment_distance(double px, double py, double ax, double ay, double bx, double by,
+                               double *t_out)
+{
+    double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
+    double t = len2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / len2 : 0;
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    if (t_out)
+        *t_out = t;
+    double qx = ax + t * dx - px, qy = ay + t * dy - py;
+    return sqrt(qx * qx + qy * qy);
+}
+
+/* Every pixel whose centre lies within half_width of the segment (picture
+ * coordinates, pixel (x, y) spanning [x, x + 1)); dash > 0 leaves gaps of that
+ * length between dashes of that length. */
+static void line(Image *im, double ax, double ay, double bx, double by, double half_width,
+                 double dash, Rgb c)
+{
+    int x0 = (int)floor(fmin(ax, bx) - half_width), x1 = (int)ceil(fmax(ax, bx) + half_width);
+    int y0 = (int)floor(fmin(ay, by) - half_width), y1 = (int)ceil(fmax(ay, by) + half_width);
+    double len = hypot(bx - ax, by - ay);
+    for (int y = y0; y <= y1; y++)
+        for (int x = x0; x <= x1; x++) {
+            double t;
+            if (segment_distance(x + 0.5, y + 0.5, ax, ay, bx, by, &t) > half_width)
+                continue;
+            if (dash > 0 && fmod(t * len, 2 * dash) >= dash)
+                continue;
+            put(im, x, y, c);
+        }
+}
+
+/* Pixels whose centres are between r_in and r_out from (cx, cy). */
+static void ring(Image *im, double cx, double cy, double r_in, double r_out, Rgb c)
+{
+    for (int y = (int)floor(cy - r_out); y <= (int)ceil(cy + r_out); y++)
+        for (int x = (int)floor(cx - r_out); x <= (int)ceil(cx + r_out); x++) {
+            double r = hypot(x + 0.5 - cx, y + 0.5 - cy);
+            if (r <= r_out && r >= r_in)
+                put(im, x, y, c);
+        }
+}
+
+static void disc(Image *im, double cx, double cy, double r, Rgb c) { ring(im, cx, cy, 0, r, c); }
+
+/* A filled arrowhead with its tip at (x, y), pointing along (dx, dy). */
+static void arrowhead(Image *im, double x, double y, double dx, double dy, double size, Rgb c)
+{
+    double len = hypot(dx, dy);
+    dx /= len;
+    dy /= len;
+    double bx = x - dx * size, by = y - dy * size; /* the middle of its base */
+    double p[3][2] = {{x, y}, {bx - dy * size * 0.5, by + dx * size * 0.5},
+                      {bx + dy * size * 0.5, by - dx * size * 0.5}};
+    for (int py = (int)floor(y - size) - 1; py <= (int)ceil(y + size) + 1; py++)
+        for (int px = (int)floor(x - size) - 1; px <= (int)ceil(x + size) + 1; px++) {
+            double qx = px + 0.5, qy = py + 0.5;
+            int sign = 0;
+            for (int k = 0; k < 3; k++) {
+                const double *a = p[k], *b = p[(k + 1) % 3];
+                double e = (b[0] - a[0]) * (qy - a[1]) - (b[1] - a[1]) * (qx - a[0]);
+                sign += e >= 0 ? 1 : -1;
+            }
+            if (sign == 3 || sign == -3)
+                put(im, px, py, c);
+        }
+}
+
+/* ---- The lessons' fill rule, in its scanline form ----------------------------- */
+
+/* docs/04_scanline_inverse_z.md: a row y is drawn when its centre y + 0.5 is
+ * in [top, bottom), a pixel x of it when its centre x + 0.5 is in
+ * [left, right), the two edges' x on that row. It is the top-left rule of
+ * lessons 02 and 03 said another way, and covers the same pixels; it is
+ * written here afresh, not copied from a lesson, so that a student's handout
+ * of a lesson (which holds tools/) does not hold that lesson's solution. */
+
+#define SUBPIXEL_ONE 256 /* corners snapped to 1/256 of a pixel, as the lessons do */
+#define SUBPIXEL_HALF (SUBPIXEL_ONE / 2)
+
+typedef struct { int64_t x, y; } FixedPoint;
+typedef struct { double x, y; } Point; /* screen pixels, y down */
+
+static FixedPoint snap_to_fixed(Point p)
+{
+    return (FixedPoint){(int64_t)floor(p.x * SUBPIXEL_ONE + 0.5),
+                        (int64_t)floor(p.y * SUBPIXEL_ONE + 0.5)};
+}
+
+static FixedPoint centre_of(int x, int y)
+{
+    return (FixedPoint){(int64_t)x * SUBPIXEL_ONE + SUBPIXEL_HALF,
+                        (int64_t)y * SUBPIXEL_ONE + SUBPIXEL_HALF};
+}
+
+/* Is the centre of pixel (x, y) in the convex polygon, corners clockwise on
+ * the screen? Going clockwise, an edge that runs down the screen is on the
+ * right side, one that runs up on the left; each tests the rows whose centres
+ * are in [its upper end, its lower end), exactly, in integers. */
+static bool covers(const Point *corner, int n, int x, int y)
+{
+    FixedPoint c = centre_of(x, y);
+    int64_t top = INT64_MAX, bottom = INT64_MIN;
+    for (int k = 0; k < n; k++) {
+        FixedPoint a = snap_to_fixed(corner[k]), b = snap_to_fixed(corner[(k + 1) % n]);
+        top = a.y < top ? a.y : top;
+        bottom = a.y > bottom ? a.y : bottom;
+        if (a.y == b.y)
+            continue; /* horizontal: [top, bottom) decides */
+        FixedPoint upper = a.y < b.y ? a : b, lower = a.y < b.y ? b : a;
+        if (c.y < upper.y || c.y >= lower.y)
+            continue;
+        /* The edge's x on this row is upper.x + (c.y - upper.y) * run / rise;
+         * compared with c.x without dividing (rise > 0). */
+        int64_t rise = lower.y - upper.y, run = lower.x - upper.x;
+        int64_t centre_side = (c.x - upper.x) * rise, edge_side = (c.y - upper.y) * run;
+        bool right_side = b.y > a.y;
+        if (right_side ? centre_side >= edge_side : centre_side < edge_side)
+            return false;
+    }
+    return top <= c.y && c.y < bottom;
+}
+
+/* Is the centre of pixel (x, y) exactly on the segment a-b, between its ends? */
+static bool centre_on_edge(Point a, Point b, int x, int y)
+{
+    FixedPoint fa = snap_to_fixed(a), fb = snap_to_fixed(b), c = centre_of(x, y);
+    FixedPoint along = {fb.x - fa.x, fb.y - fa.y}, to_c = {c.x - fa.x, c.y - fa.y};
+    if (along.x * to_c.y != along.y * to_c.x)
+        return false; /* not on the line */
+    int64_t dot = to_c.x * along.x + to_c.y * along.y;
+    return dot > 0 && dot < along.x * along.x + along.y * along.y;
+}
+
+/* ---- A magnified pixel grid ----------------------------------------------------- */
+
+typedef struct {
+    Image *im;
+    int left, top;  /* picture position of the grid's top-left corner */
+    int cell;       /* picture pixels per screen pixel */
+    int cols, rows;
+} Grid;
+
+static double gx(const Grid *g, double x) { return g->left + x * g->cell; }
+static double gy(const Grid *g, double y) { return g->top + y * g->cell; }
+
+static void grid_cells_and_lines(const Grid *g, Rgb (*cell_colour)(int x, int y, const void *),
+                                 const void *ctx)
+{
+    for (int y = 0; y < g->rows; y++)
+        for (int x = 0; x < g->cols; x++)
+            fill_rect(g->im, (int)gx(g, x), (int)gy(g, y), (int)gx(g, x + 1), (int)gy(g, y + 1),
+                      cell_colour(x, y, ctx));
+    for (int x = 0; x <= g->cols; x++)
+        fill_rect(g->im, (int)gx(g, x), g->top, (int)gx(g, x) + 1, (int)gy(g, g->rows) + 1,
+                  GRID_LINE);
+    for (int y = 0; y <= g->rows; y++)
+        fill_rect(g->im, g->left, (int)gy(g, y), (int)gx(g, g->cols) + 1, (int)gy(g, y) + 1,
+                  GRID_LINE);
+}
+
+#define DOT_RADIUS 6.5
+#define RING_WIDTH 2.0
+
+/* Pixel (x, y)'s centre: a filled dot, or an empty ring when colour is NULL. */
+static void centre_dot(const Grid *g, int x, int y, const Rgb *colour)
+{
+    double cx = gx(g, x + 0.5), cy = gy(g, y + 0.5);
+    if (colour) {
+        disc(g->im, cx, cy, DOT_RADIUS + 1.5, LABEL_BOX);
+        disc(g->im, cx, cy, DOT_RADIUS, *colour);
+    } else {
+        disc(g->im, cx, cy, DOT_RADIUS, BACKGROUND); /* empty, even where an edge passes */
+        ring(g->im, cx, cy, DOT_RADIUS - RING_WIDTH, DOT_RADIUS, HOLLOW);
+    }
+}
+
+static void grid_edge(const Grid *g, Point a, Point b, Rgb c)
+{
+    line(g->im, gx(g, a.x), gy(g, a.y), gx(g, b.x), gy(g, b.y), 1.6, 0, c);
+}
+
+/* A legend line: a swatch drawn by the caller at (x, y + 7), then the text. */
+static void legend_text(Image *im, int x, int y, const char *text)
+{
+    text_at(im, x + 34, y, text, TEXT_SCALE, TEXT);
+}
+
+/* ---- 02: edge functions and the top-left rule --------------------------------- */
+
+#define E02_WIDTH 900
+#define E02_HEIGHT 500
+#define E02_COLS 12
+#define E02_ROWS 8
+#define E02_CELL 40   /* read by the test */
+#define E02_LEFT 60   /* read by the test */
+#define E02_TOP 56    /* read by the test */
+
+/* The two triangles, clockwise on the screen (read by the test, which draws
+ * them with lesson 02). They share the edge s0-s1, which runs through the
+ * centres of pixels (2, 1), (5, 3) and (8, 5). */
+static const Point S0 = {1.75, 1.0}, S1 = {9.25, 6.0};
+static const Point A_THIRD = {10.75, 1.0}, B_THIRD = {1.25, 7.0};
+
+typedef struct { Point a[3], b[3]; } TwoTriangles;
+
+static Rgb e02_cell(int x, int y, const void *ctx)
+{
+    const TwoTriangles *t = ctx;
+    return covers(t->a, 3, x, y) ? A_CELL : covers(t->b, 3, x, y) ? B_CELL : BACKGROUND;
+}
+
+/* A square outline, 3 pixels thick, around (cx, cy): a centre on the shared edge. */
+static void square_mark(Image *im, double cx, double cy, double half)
+{
+    for (int w = 0; w < 3; w++) {
+        double h = half + w;
+        line(im, cx - h, cy - h, cx + h, cy - h, 0.5, 0, SHARED_MARK);
+        line(im, cx - h, cy + h, cx + h, cy + h, 0.5, 0, SHARED_MARK);
+        line(im, cx - h, cy - h, cx - h, cy + h, 0.5, 0, SHARED_MARK);
+        line(im, cx + h, cy - h, cx + h, cy + h, 0.5, 0, SHARED_MARK);
+    }
+}
+
+/* An arrow on edge a->b of triangle A, a fraction at along it: the direction of the walk. */
+static void e02_edge_arrow(const Grid *g, Point a, Point b, double at)
+{
+    double x = gx(g, a.x + (b.x - a.x) * at), y = gy(g, a.y + (b.y - a.y) * at);
+    arrowhead(g->im, x, y, b.x - a.x, b.y - a.y, 16, A_DOT);
+}
+
+static void draw_edge_functions(Image *im)
+{
+    image_fill(im, BACKGROUND);
+    Grid g = {im, E02_LEFT, E02_TOP, E02_CELL, E02_COLS, E02_ROWS};
+    /* A = p0 p1 p2: e0 = E(p1, p2, p), e1 = E(p2, p0, p), e2 = E(p0, p1, p). */
+    TwoTriangles t = {{S0, A_THIRD, S1}, {S0, S1, B_THIRD}};
+    const Point *p = t.a;
+
+    text_at(im, E02_LEFT, 14, "Which pixels a triangle covers: 12 x 8 pixels, 40 x enlarged",
+            TEXT_SCALE, TEXT);
+    grid_cells_and_lines(&g, e02_cell, &t);
+    for (int k = 0; k < 3; k++)
+        grid_edge(&g, t.b[k], t.b[(k + 1) % 3], B_DOT);
+    for (int k = 0; k < 3; k++)
+        grid_edge(&g, p[k], p[(k + 1) % 3], A_DOT);
+    e02_edge_arrow(&g, p[1], p[2], 0.55); /* E0 */
+    e02_edge_arrow(&g, p[2], p[0], 0.30); /* E1: the shared edge, between its centres */
+    e02_edge_arrow(&g, p[0], p[1], 0.62); /* E2 */
+
+    for (int y = 0; y < E02_ROWS; y++)
+        for (int x = 0; x < E02_COLS; x++) {
+            bool in_a = covers(t.a, 3, x, y), in_b = covers(t.b, 3, x, y);
+            centre_dot(&g, x, y, in_a ? &A_DOT : in_b ? &B_DOT : NULL);
+            if (centre_on_edge(S0, S1, x, y)) {
+                double cx = gx(&g, x + 0.5), cy = gy(&g, y + 0.5);
+                square_mark(im, cx, cy, 13);
+                const char *who = in_a ? "A wins" : in_b ? "B wins" : "neither";
+                /* Under it, on B's side, between the rows of dots. */
+                boxed_text_centred(im, gx(&g, x - 0.5), gy(&g, y + 1), who, SHARED_MARK);
+            }
+        }
+
+    /* The signs of A's edge functions, each beside its edge, on grid lines
+     * (between the rows of dots). */
+    boxed_text_centred(im, gx(&g, 7.0), gy(&g, 0), "E2 < 0", A_DOT);
+    boxed_text_centred(im, gx(&g, 7.0), gy(&g, 2), "E2 > 0", A_DOT);
+    boxed_text_centred(im, gx(&g, 8.7), gy(&g, 4), "E0 > 0", A_DOT);
+    boxed_text_centred(im, gx(&g, 11.2), gy(&g, 3), "E0 < 0", A_DOT);
+    boxed_text_centred(im, gx(&g, 6.0), gy(&g, 3), "E1 > 0", A_DOT);
+    boxed_text_centred(im, gx(&g, 2.2), gy(&g, 3), "E1 < 0", A_DOT);
+    boxed_text_centred(im, gx(&g, 1.1), gy(&g, 1), "p0", A_DOT);
+    boxed_text_centred(im, gx(&g, 11.4), gy(&g, 1), "p1", A_DOT);
+    boxed_text_centred(im, gx(&g, 9.9), gy(&g, 6), "p2", A_DOT);
+    boxed_text_centred(im, gx(&g, 9.0), gy(&g, 3), "A", A_DOT);
+    boxed_text_centred(im, gx(&g, 2.5), gy(&g, 6), "B", B_DOT);
+
+    /* The legend, right of the grid and under it. */
+    int lx = E02_LEFT + E02_COLS * E02_CELL + 24, ly = E02_TOP + 4;
+    text_at(im, lx, ly, "A = p0 p1 p2, clockwise:", TEXT_SCALE, TEXT);
+    text_at(im, lx, ly + 22, "E0 = E(p1, p2, p)", TEXT_SCALE, A_DOT);
+    text_at(im, lx, ly + 44, "E1 = E(p2, p0, p)", TEXT_SCALE, A_DOT);
+    text_at(im, lx, ly + 66, "E2 = E(p0, p1, p)", TEXT_SCALE, A_DOT);
+    text_at(im, lx, ly + 96, "The arrows walk each", TEXT_SCALE, DIM_TEXT);
+    text_at(im, lx, ly + 118, "edge; E > 0 on its", TEXT_SCALE, DIM_TEXT);
+    text_at(im, lx, ly + 140, "right: the inside.", TEXT_SCALE, DIM_TEXT);
+    text_at(im, lx, ly + 170, "Shared edge p2->p0:", TEXT_SCALE, TEXT);
+    text_at(im, lx, ly + 192, "a left edge of A (in),", TEXT_SCALE, DIM_TEXT);
+    text_at(im, lx, ly + 214, "a right edge of B (out)", TEXT_SCALE, DIM_TEXT);
+
+    int y0 = E02_TOP + E02_ROWS * E02_CELL + 28;
+    disc(im, E02_LEFT + 10, y0 + 7, DOT_RADIUS, A_DOT);
+    legend_text(im, E02_LEFT, y0, "centre inside A: the pixel is A's");
+    disc(im, E02_LEFT + 10, y0 + 31, DOT_RADIUS, B_DOT);
+    legend_text(im, E02_LEFT, y0 + 24, "centre inside B: the pixel is B's");
+    ring(im, E02_LEFT + 10, y0 + 55, DOT_RADIUS - RING_WIDTH, DOT_RADIUS, HOLLOW);
+    legend_text(im, E02_LEFT, y0 + 48, "centre outside both: not drawn");
+    square_mark(im, E02_LEFT + 10, y0 + 79, 10);
+    legend_text(im, E02_LEFT, y0 + 72,
+                "centre on the shared edge: the top-left rule picks one");
+}
+
+/* ---- 03: d and 1/d along a screen row ------------------------------------------ */
+
+#define E03_WIDTH 820
+#define E03_HEIGHT 520
+#define E03_PLOT_LEFT 100   /* the plot's frame (read by the test) */
+#define E03_PLOT_RIGHT 700
+#define E03_PLOT_TOP 100
+#define E03_PLOT_BOTTOM 440
+
+/* grazing's camera (common/scene.c) at 800 x 600, and its strip A stood on its
+ * side: the wall x = -0.5 from d = 1.5 to 100. Along row 300 it lands at
+ * x_s = 400 - k * 0.5 / d, k = 300 / tan(fovy / 2): the page's
+ * "row 300 + 362.1 / d", turned from a column into a row. */
+#define SCREEN_WIDTH 800.0
+#define SCREEN_HEIGHT 600.0
+#define FOVY_DEGREES 45.0
+#define STRIP_X (-0.5)
+#define STRIP_NEAR 1.5
+#define STRIP_FAR 100.0
+#define PI 3.14159265358979323846
+
+/* The plot's ranges: screen x along the bottom, d on the left, 1/d on the right. */
+#define X_MIN 150.0
+#define X_MAX 400.0
+#define X_TICK 50.0
+#define D_MAX 100.0
+#define D_TICK 20.0
+#define INV_D_MAX 0.7
+#define INV_D_TICK 0.1
+
+static double screen_scale(void) { return SCREEN_HEIGHT / 2 / tan(FOVY_DEGREES * PI / 360); }
+static double strip_screen_x(double d) { return SCREEN_WIDTH / 2 + screen_scale() * STRIP_X / d; }
+static double strip_depth(double xs) { return screen_scale() * STRIP_X / (xs - SCREEN_WIDTH / 2); }
+
+static double plot_x(double xs)
+{
+    return E03_PLOT_LEFT + (xs - X_MIN) / (X_MAX - X_MIN) * (E03_PLOT_RIGHT - E03_PLOT_LEFT);
+}
+static double plot_y(double v, double v_max)
+{
+    return E03_PLOT_BOTTOM - v / v_max * (E03_PLOT_BOTTOM - E03_PLOT_TOP);
+}
+
+/* One of the strip's curves, a short segment per picture column. */
+static void plot_curve(Image *im, bool inverse, Rgb c)
+{
+    double x0 = strip_screen_x(STRIP_NEAR), x1 = strip_screen_x(STRIP_FAR);
+    int columns = (int)ceil(plot_x(x1) - plot_x(x0));
+    double px = 0, py = 0;
+    for (int i = 0; i <= columns; i++) {
+        double xs = x0 + (x1 - x0) * i / columns, d = strip_depth(xs);
+        double qx = plot_x(xs), qy = inverse ? plot_y(1 / d, INV_D_MAX) : plot_y(d, D_MAX);
+        if (i > 0)
+            line(im, px, py, qx, qy, 1.6, 0, c);
+        px = qx;
+        py = qy;
+    }
+}
+
+static void draw_depth_along_a_row(Image *im)
+{
+    image_fill(im, BACKGROUND);
+    char text[MAX_LABEL];
+    text_at(im, 20, 14, "One strip, d = 1.5 to 100, along a screen row", TEXT_SCALE, TEXT);
+    text_at(im, 20, 36, "(grazing's strip A stood on its side: x = 400 - 362.1 / d)",
+            TEXT_SCALE, DIM_TEXT);
+
+    /* The legend, above the frame. */
+    int ly = E03_PLOT_TOP - 36;
+    line(im, 20, ly + 7, 56, ly + 7, 1.6, 0, D_COLOUR);
+    text_at(im, 64, ly, "d: a curve", TEXT_SCALE, D_COLOUR);
+    line(im, 200, ly + 7, 236, ly + 7, 1.6, 0, INV_D_COLOUR);
+    text_at(im, 244, ly, "1/d: a straight line", TEXT_SCALE, INV_D_COLOUR);
+    line(im, 510, ly + 7, 546, ly + 7, 1.1, 5, NAIVE_COLOUR);
+    text_at(im, 554, ly, "naive d (lesson 02)", TEXT_SCALE, NAIVE_COLOUR);
+
+    /* Frame, ticks and their labels. */
+    line(im, E03_PLOT_LEFT, E03_PLOT_BOTTOM, E03_PLOT_RIGHT, E03_PLOT_BOTTOM, 0.5, 0, AXIS_COLOUR);
+    line(im, E03_PLOT_LEFT, E03_PLOT_TOP, E03_PLOT_LEFT, E03_PLOT_BOTTOM, 0.5, 0, D_COLOUR);
+    line(im, E03_PLOT_RIGHT, E03_PLOT_TOP, E03_PLOT_RIGHT, E03_PLOT_BOTTOM, 0.5, 0, INV_D_COLOUR);
+    for (double xs = X_MIN; xs <= X_MAX + 1e-9; xs += X_TICK) {
+        double x = plot_x(xs);
+        line(im, x, E03_PLOT_BOTTOM, x, E03_PLOT_BOTTOM + 6, 0.5, 0, AXIS_COLOUR);
+        snprintf(text, sizeof text, "%g", xs);
+        text_at(im, (int)lround(x) - scaled_width(text, TEXT_SCALE) / 2, E03_PLOT_BOTTOM + 12,
+                text, TEXT_SCALE, AXIS_COLOUR);
+    }
+    for (double d = 0; d <= D_MAX + 1e-9; d += D_TICK) {
+        double y = plot_y(d, D_MAX);
+        line(im, E03_PLOT_LEFT - 6, y, E03_PLOT_LEFT, y, 0.5, 0, D_COLOUR);
+        snprintf(text, sizeof text, "%g", d);
+        text_at(im, E03_PLOT_LEFT - 12 - scaled_width(text, TEXT_SCALE), (int)lround(y) - 7, text,
+                TEXT_SCALE, D_COLOUR);
+    }
+    for (int k = 0; k * INV_D_TICK <= INV_D_MAX + 1e-9; k++) {
+        double y = plot_y(k * INV_D_TICK, INV_D_MAX);
+        line(im, E03_PLOT_RIGHT, y, E03_PLOT_RIGHT + 6, y, 0.5, 0, INV_D_COLOUR);
+        snprintf(text, sizeof text, "%.1f", k * INV_D_TICK);
+        text_at(im, E03_PLOT_RIGHT + 12, (int)lround(y) - 7, text, TEXT_SCALE, INV_D_COLOUR);
+    }
+    const char *x_title = "x on the screen (pixels)";
+    text_at(im, (E03_PLOT_LEFT + E03_PLOT_RIGHT - scaled_width(x_title, TEXT_SCALE)) / 2,
+            E03_PLOT_BOTTOM + 40, x_title, TEXT_SCALE, AXIS_COLOUR);
+    text_at(im, E03_PLOT_LEFT - 60, (E03_PLOT_TOP + E03_PLOT_BOTTOM) / 2 - 7, "d", TEXT_SCALE,
+            D_COLOUR);
+    text_at(im, E03_PLOT_RIGHT + 60, (E03_PLOT_TOP + E03_PLOT_BOTTOM) / 2 - 7, "1/d", TEXT_SCALE,
+            INV_D_COLOUR);
+
+    /* The naive line first, so that the true curves are drawn over it. */
+    double x0 = strip_screen_x(STRIP_NEAR), x1 = strip_screen_x(STRIP_FAR);
+    line(im, plot_x(x0), plot_y(STRIP_NEAR, D_MAX), plot_x(x1), plot_y(STRIP_FAR, D_MAX), 1.1, 6,
+         NAIVE_COLOUR);
+    plot_curve(im, false, D_COLOUR);
+    plot_curve(im, true, INV_D_COLOUR);
+}
+
+/* ---- 04: edge walking and one span -------------------------------------------- */
+
+#define E04_WIDTH 820
+#define E04_HEIGHT 600
+#define E04_COLS 12
+#define E04_ROWS 9
+#define E04_CELL 40   /* read by the test */
+#define E04_LEFT 170  /* read by the test */
+#define E04_TOP 90    /* read by the test */
+#define E04_SPAN_ROW 5
+#define E04_CORNERS 6
+
+/* A convex hexagon, clockwise on the screen from its top corner (read by the
+ * test, which draws it with lesson 04). */
+static const Point HEXAGON[E04_CORNERS] = {{5.25, 0.75}, {9.5, 2.25}, {10.75, 6.0},
+                                           {7.0, 8.25},  {2.25, 7.5}, {1.5, 3.0}};
+
+static Rgb e04_cell(int x, int y, const void *ctx)
+{
+    (void)ctx;
+    if (!covers(HEXAGON, E04_CORNERS, x, y))
+        return BACKGROUND;
+    return y == E04_SPAN_ROW ? SPAN_CELL : POLY_CELL;
+}
+
+static Point snapped(Point p)
+{
+    FixedPoint f = snap_to_fixed(p);
+    return (Point){(double)f.x / SUBPIXEL_ONE, (double)f.y / SUBPIXEL_ONE};
+}
+
+/* Where the chain from corner `from` stepping by `step` (+1: the right side,
+ * clockwise; -1: the left side) crosses height yc, which lies in [top, bottom). */
+static double chain_x(int from, int step, double yc)
+{
+    for (int k = 0; k < E04_CORNERS; k++) {
+        int i = (from + step * k + E04_CORNERS) % E04_CORNERS;
+        int j = (i + step + E04_CORNERS) % E04_CORNERS;
+        Point a = snapped(HEXAGON[i]), b = snapped(HEXAGON[j]);
+        if (a.y <= yc && yc < b.y)
+            return a.x + (yc - a.y) * (b.x - a.x) / (b.y - a.y);
+    }
+    return NAN;
+}
+
+static void draw_edge_walk(Image *im)
+{
+    image_fill(im, BACKGROUND);
+    Grid g = {im, E04_LEFT, E04_TOP, E04_CELL, E04_COLS, E04_ROWS};
+    char text[MAX_LABEL];
+    int top = 0, bottom = 0;
+    for (int k = 1; k < E04_CORNERS; k++) {
+        top = HEXAGON[k].y < HEXAGON[top].y ? k : top;
+        bottom = HEXAGON[k].y > HEXAGON[bottom].y ? k : bottom;
+    }
+    text_at(im, 20, 14, "Edge walking: a convex polygon, 12 x 9 pixels, 40 x enlarged",
+            TEXT_SCALE, TEXT);
+
+    grid_cells_and_lines(&g, e04_cell, NULL);
+    for (int k = 0; k < E04_CORNERS; k++) {
+        /* Clockwise from the top, the corners down to the bottom one are the right side. */
+        int next = (k + 1) % E04_CORNERS;
+        bool right = ((k - top + E04_CORNERS) % E04_CORNERS) <
+                     ((bottom - top + E04_CORNERS) % E04_CORNERS);
+        grid_edge(&g, HEXAGON[k], HEXAGON[next], right ? RIGHT_COLOUR : LEFT_COLOUR);
+    }
+    /* Each drawn row's two crossings, as ticks through the row centre that
+     * stick out above and below the dots drawn over them. */
+    for (int y = 0; y < E04_ROWS; y++) {
+        double yc = y + 0.5;
+        if (!(HEXAGON[top].y <= yc && yc < HEXAGON[bottom].y))
+            continue; /* the row's centre is outside [top, bottom): no span */
+        for (int side = -1; side <= 1; side += 2) {
+            double x = gx(&g, chain_x(top, side, yc));
+            Rgb c = side < 0 ? LEFT_COLOUR : RIGHT_COLOUR;
+            line(im, x, gy(&g, yc) - 14, x, gy(&g, yc) + 14, 2.5, 0, LABEL_BOX);
+            line(im, x, gy(&g, yc) - 13, x, gy(&g, yc) + 13, 1.5, 0, c);
+        }
+    }
+    for (int y = 0; y < E04_ROWS; y++)
+        for (int x = 0; x < E04_COLS; x++) {
+            bool in = covers(HEXAGON, E04_CORNERS, x, y);
+            centre_dot(&g, x, y, !in ? NULL : y == E04_SPAN_ROW ? &SPAN_DOT : &IN_DOT);
+        }
+
+    /* Row and column numbers, and each drawn row's two crossings in figures. */
+    for (int x = 0; x < E04_COLS; x++) {
+        snprintf(text, sizeof text, "%d", x);
+        text_at(im, (int)gx(&g, x + 0.5) - scaled_width(text, TEXT_SCALE) / 2, E04_TOP - 26,
+                text, TEXT_SCALE, DIM_TEXT);
+    }
+    text_at(im, E04_LEFT - 152, E04_TOP - 30, "left x", TEXT_SCALE, LEFT_COLOUR);
+    text_at(im, E04_LEFT + E04_COLS * E04_CELL + 28, E04_TOP - 30, "right x", TEXT_SCALE,
+            RIGHT_COLOUR);
+    for (int y = 0; y < E04_ROWS; y++) {
+        double yc = y + 0.5;
+        snprintf(text, sizeof text, "y = %d", y);
+        text_at(im, E04_LEFT - 72, (int)gy(&g, yc) - 7, text, TEXT_SCALE, DIM_TEXT);
+        if (!(HEXAGON[top].y <= yc && yc < HEXAGON[bottom].y))
+            continue; /* the row's centre is outside [top, bottom): no span */
+        double xl = chain_x(top, -1, yc), xr = chain_x(top, +1, yc);
+        snprintf(text, sizeof text, "%.2f", xl);
+        text_at(im, E04_LEFT - 152, (int)gy(&g, yc) - 7, text, TEXT_SCALE, LEFT_COLOUR);
+        snprintf(text, sizeof text, "%.2f", xr);
+        text_at(im, E04_LEFT + E04_COLS * E04_CELL + 28, (int)gy(&g, yc) - 7, text, TEXT_SCALE,
+                RIGHT_COLOUR);
+    }
+    boxed_text_centred(im, gx(&g, 3.0), gy(&g, 1), "left edge", LEFT_COLOUR);
+    boxed_text_centred(im, gx(&g, 8.6), gy(&g, 1), "right edge", RIGHT_COLOUR);
+    boxed_text_centred(im, gx(&g, 6.0), gy(&g, E04_SPAN_ROW + 1), "span y = 5", SPAN_DOT);
+    boxed_text_centred(im, gx(&g, HEXAGON[top].x), gy(&g, 0), "top", TEXT);
+    boxed_text_centred(im, gx(&g, HEXAGON[bottom].x), gy(&g, E04_ROWS), "bottom", TEXT);
+
+    int y0 = E04_TOP + E04_ROWS * E04_CELL + 24, lx = 40;
+    line(im, lx + 8, y0 - 3, lx + 8, y0 + 17, 1.5, 0, LEFT_COLOUR);
+    line(im, lx + 20, y0 - 3, lx + 20, y0 + 17, 1.5, 0, RIGHT_COLOUR);
+    legend_text(im, lx + 14, y0, "where the left and right edges cross the row centre");
+    disc(im, lx + 10, y0 + 31, DOT_RADIUS, SPAN_DOT);
+    legend_text(im, lx, y0 + 24, "the span of row 5: centres x + 0.5 in [left x, right x)");
+    disc(im, lx + 10, y0 + 55, DOT_RADIUS, IN_DOT);
+    legend_text(im, lx, y0 + 48, "centres in the other rows' spans");
+    ring(im, lx + 10, y0 + 79, DOT_RADIUS - RING_WIDTH, DOT_RADIUS, HOLLOW);
+    legend_text(im, lx, y0 + 72, "centres outside every span: not drawn");
+}
+
+/* ---- Writing them ---------------------------------------------------------------- */
+
+typedef struct {
+    const char *file;
+    int width, height;
+    void (*draw)(Image *im);
+} Diagram;
+
+static const Diagram DIAGRAMS[] = {
+    {"02_edge_functions.png", E02_WIDTH, E02_HEIGHT, draw_edge_functions},
+    {"03_depth_along_a_row.png", E03_WIDTH, E03_HEIGHT, draw_depth_along_a_row},
+    {"04_edge_walk.png", E04_WIDTH, E04_HEIGHT, draw_edge_walk},
+};
+
+int main(int argc, char **argv)
+{
+    if (argc == 2 && strcmp(argv[1], "--help") == 0) {
+        printf("usage: " PROGRAM " DIR\n"
+               "Writes the diagrams of lessons 02 to 04 into DIR: 02_edge_functions.png,\n"
+               "03_depth_along_a_row.png and 04_edge_walk.png.\n");
+        return EXIT_OK;
+    }
+    if (argc != 2 || argv[1][0] == '\0' || argv[1][0] == '-') {
+        fprintf(stderr, PROGRAM ": error: expected one argument, the directory to write "
+                        "into (usage: " PROGRAM " DIR)\n");
+        return EXIT_USAGE;
+    }
+    for (size_t i = 0; i < sizeof DIAGRAMS / sizeof DIAGRAMS[0]; i++) {
+        const Diagram *dg = &DIAGRAMS[i];
+        char path[4096];
+        int n = snprintf(path, sizeof path, "%s/%s", argv[1], dg->file);
+        if (n < 0 || (size_t)n >= sizeof path) {
+            fprintf(stderr, PROGRAM ": error: the directory name is too long\n");
+            return EXIT_USAGE;
+        }
+        Image im;
+        Error err;
+        if (!image_init(&im, dg->width, dg->height, &err))
+            return error_report(PROGRAM, &err, EXIT_RUN_FAILED);
+        dg->draw(&im);
+        bool ok = image_write_png(&im, path, &err);
+        image_free(&im);
+        if (!ok)
+            return error_report(PROGRAM, &err, EXIT_RUN_FAILED);
+    }
+    return EXIT_OK;
+}
