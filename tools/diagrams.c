@@ -117,7 +117,9 @@ static void boxed_text_centred(Image *im, double cx, double cy, const char *text
 static double segment_distance(double px, double py, double ax, double ay, double bx, double by,
                                double *t_out)
 {
-    double dx = bx - ax, dy = by - ay, len2 = dx * dx + dy * dy;
+    double dx = bx - ax;
+    double dy = by - ay;
+    double len2 = dx * dx + dy * dy;
     double t = len2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / len2 : 0;
     t = t < 0 ? 0 : t > 1 ? 1 : t;
     if (t_out)
