@@ -12,7 +12,7 @@ static const Rgb NAIVE_MARK = {255, 0, 255}; /* magenta */
 
 static bool same_path(const char *a, const char *b)
 {
-    return a && b && (strcmp(a, b) == 0 || same_file(a, b));
+    return a && b && !is_stdout_name(a) && same_file(a, b);
 }
 
 bool compare_naive_path_ok(const Options *opt, const char *path, Error *err)
@@ -28,6 +28,12 @@ bool compare_naive_path_ok(const Options *opt, const char *path, Error *err)
     if (opt->compare && opt->out && compare_diff_path(opt->out, diff, sizeof diff) &&
         same_path(diff, path))
         return error_set(err, "--compare-naive names %s, where the diff picture of --out goes",
+                         path);
+    if (is_stdout_name(path))
+        return error_set(err, "--compare-naive: '-' (standard output) is for --out only; "
+                              "name a file");
+    if (opt->steps_dir && (same_path(opt->steps_dir, path) || is_step_picture(path, opt->steps_dir)))
+        return error_set(err, "--compare-naive names %s, where --steps writes its pictures",
                          path);
     return true;
 }
