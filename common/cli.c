@@ -452,20 +452,43 @@ static bool check_compare(Parser *p)
         return true;
     char diff[PATH_TEXT_MAX];
     if (compare_diff_path(o->out, diff, sizeof diff) &&
-        (strcmp(o->compare, diff) == 0 || same_file(o->compare, diff)))
+        same_file(o->compare, diff))
         return error_set(p->err, "--compare names %s, where the diff picture of --out goes",
                          diff);
     return true;
 }
 
+/* "-" is standard output, for --out only; the diff picture of --compare is
+ * written beside --out, so --compare needs --out to name a file. */
+static bool check_stdout(Parser *p)
+{
+    const Options *o = p->opt;
+    const char *name[] = {"--depth-out", "--overdraw-out", "--id-out", "--world-out", "--obj",
+                          "--compare", "--steps"};
+    const char *path[] = {o->depth_out, o->overdraw_out, o->id_out, o->world_out, o->obj,
+                          o->compare, o->steps_dir};
+    for (size_t i = 0; i < sizeof name / sizeof name[0]; i++)
+        if (is_stdout_name(path[i]))
+            return error_set(p->err, "%s: '-' (standard output) is for --out only; name a file",
+                             name[i]);
+    if (o->compare && is_stdout_name(o->out))
+        return error_set(p->err, "--compare writes its diff picture beside --out, which is "
+                                 "standard output here: name a file with --out");
+    return true;
+}
+
 /* An output must not replace an input, nor another output: "--obj and --out
- * both name m.obj". Names are compared as given and, for files that exist
- * already, by what they point to (a.png and ./a.png are the same file). The
- * diff picture --compare writes beside --out counts as an output too. */
+ * both name m.obj". Files are compared by identity (file.h same_file): a.png,
+ * ./a.png, sub/../a.png, a symbolic link to it (dangling or not) and a hard
+ * link to it are one file, whether or not it exists yet. The diff picture
+ * --compare writes beside --out counts as an output too, and so does every
+ * picture --steps DIR may write (DIR/step_NNNN.png, DIR/step_NNNN_depth.png). */
 static bool check_paths(Parser *p)
 {
     enum { FIRST_OUTPUT = 2, DIFF = 7, PATH_COUNT = 8 };
     const Options *o = p->opt;
+    if (!check_stdout(p))
+        return false;
     char diff[PATH_TEXT_MAX];
     bool has_diff = o->compare && o->out && compare_diff_path(o->out, diff, sizeof diff);
     const char *name[PATH_COUNT] = {"--obj", "--compare", "--out", "--depth-out",
@@ -473,15 +496,25 @@ static bool check_paths(Parser *p)
                                     "the diff picture of --out"};
     const char *path[PATH_COUNT] = {o->obj, o->compare, o->out, o->depth_out, o->overdraw_out,
                                     o->id_out, o->world_out, has_diff ? diff : NULL};
+    if (is_stdout_name(o->out))
+        path[FIRST_OUTPUT] = NULL;
     for (int j = FIRST_OUTPUT; j < PATH_COUNT; j++)
         for (int i = 0; i < j; i++)
-            if (path[i] && path[j] &&
-                (strcmp(path[i], path[j]) == 0 || same_file(path[i], path[j]))) {
+            if (path[i] && path[j] && same_file(path[i], path[j])) {
                 if (j == DIFF)
                     return error_set(p->err, "%s names %s, where the diff picture of --out goes",
                                      name[i], path[j]);
                 return error_set(p->err, "%s and %s both name %s", name[i], name[j], path[j]);
             }
+    for (int i = 0; o->steps_dir && i < PATH_COUNT; i++) {
+        if (!path[i])
+            continue;
+        if (same_file(path[i], o->steps_dir))
+            return error_set(p->err, "%s and --steps both name %s", name[i], path[i]);
+        if (is_step_picture(path[i], o->steps_dir))
+            return error_set(p->err, "%s names %s, where --steps writes its pictures", name[i],
+                             path[i]);
+    }
     return true;
 }
 

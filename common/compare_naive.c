@@ -12,7 +12,7 @@ static const Rgb NAIVE_MARK = {255, 0, 255}; /* magenta */
 
 static bool same_path(const char *a, const char *b)
 {
-    return a && b && (strcmp(a, b) == 0 || same_file(a, b));
+    return a && b && !is_stdout_name(a) && same_file(a, b);
 }
 
 bool compare_flag_path_ok(const Options *opt, const char *flag, const char *path, Error *err)
@@ -28,6 +28,10 @@ bool compare_flag_path_ok(const Options *opt, const char *flag, const char *path
     if (opt->compare && opt->out && compare_diff_path(opt->out, diff, sizeof diff) &&
         same_path(diff, path))
         return error_set(err, "%s names %s, where the diff picture of --out goes", flag, path);
+    if (is_stdout_name(path))
+        return error_set(err, "%s: '-' (standard output) is for --out only; name a file", flag);
+    if (opt->steps_dir && (same_path(opt->steps_dir, path) || is_step_picture(path, opt->steps_dir)))
+        return error_set(err, "%s names %s, where --steps writes its pictures", flag, path);
     return true;
 }
 

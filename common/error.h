@@ -8,7 +8,9 @@
 
 #include <stdbool.h>
 
-#define ERROR_MSG_MAX 512
+/* Room for two paths of PATH_MAX and the words around them: a long path
+ * never cuts off the reason that follows it. */
+#define ERROR_MSG_MAX (2 * 4096 + 512)
 
 typedef struct {
     char msg[ERROR_MSG_MAX];

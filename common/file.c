@@ -8,9 +8,15 @@
  *                  there), then rename the temporary file over the target
  * Any failure removes the temporary file; the target is touched only by the
  * final rename, so it keeps its old bytes until the new ones are complete. */
+/* realpath(3) is an X/Open function. */
+#define _XOPEN_SOURCE 700
+
 #include "file.h"
 
 #include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -35,21 +41,219 @@ static char *copy_string(const char *s)
     return c;
 }
 
-/* "dir/name" -> "dir/.name.XXXXXX"; "name" -> ".name.XXXXXX". */
+#ifndef NAME_MAX
+#define NAME_MAX 255
+#endif
+
+/* "dir/name" -> "dir/.name.XXXXXX"; "name" -> ".name.XXXXXX". A name so long
+ * that the temporary one would pass NAME_MAX is shortened in the temporary
+ * name only: any legal name can be written. */
 static char *temp_name_for(const char *path)
 {
     const char *slash = strrchr(path, '/');
     size_t dir_len = slash ? (size_t)(slash - path) + 1 : 0;
     const char *base = path + dir_len;
-    size_t n = dir_len + 1 + strlen(base) + sizeof TEMP_SUFFIX;
+    size_t base_len = strlen(base), room = NAME_MAX - 1 - (sizeof TEMP_SUFFIX - 1);
+    if (base_len > room)
+        base_len = room;
+    size_t n = dir_len + 1 + base_len + sizeof TEMP_SUFFIX;
     char *tmp = malloc(n);
     if (tmp) {
         memcpy(tmp, path, dir_len);
         tmp[dir_len] = '.';
-        strcpy(tmp + dir_len + 1, base);
-        strcat(tmp, TEMP_SUFFIX);
+        memcpy(tmp + dir_len + 1, base, base_len);
+        memcpy(tmp + dir_len + 1 + base_len, TEMP_SUFFIX, sizeof TEMP_SUFFIX);
     }
     return tmp;
+}
+
+/* ---- the temporary files that exist, for the signal handler ----
+ *
+ * Each slot holds a pointer to a path that is complete before the slot is
+ * filled; slots change only while the signals are blocked, so the handler
+ * sees either no path or a whole one. It calls only unlink, rmdir and _exit,
+ * which are async-signal-safe. */
+#define TEMP_SLOTS 8192 /* --steps: two files per face, up to 2000 faces, and the rest */
+#define DIR_SLOTS 64
+static const int CLEANUP_SIGNALS[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
+#define CLEANUP_SIGNAL_COUNT ((int)(sizeof CLEANUP_SIGNALS / sizeof CLEANUP_SIGNALS[0]))
+
+static char *volatile temp_slot[TEMP_SLOTS];
+static volatile int temp_slots_used; /* slots at and past this index are empty */
+static char *volatile dir_slot[DIR_SLOTS]; /* directories made for the pending outputs */
+static volatile int dir_slots_used;
+
+static void remove_temporaries_and_exit(int sig)
+{
+    for (int i = 0; i < temp_slots_used; i++)
+        if (temp_slot[i])
+            unlink(temp_slot[i]);
+    for (int i = dir_slots_used - 1; i >= 0; i--)
+        if (dir_slot[i])
+            rmdir(dir_slot[i]);
+    _exit(128 + sig);
+}
+
+/* Each time a temporary file is made: a signal left at its default action
+ * gets the handler; one that is ignored (nohup, a shell's background job)
+ * stays ignored, and one with a handler of the program's keeps it. */
+static void install_handlers(void)
+{
+    for (int i = 0; i < CLEANUP_SIGNAL_COUNT; i++) {
+        struct sigaction old, sa;
+        if (sigaction(CLEANUP_SIGNALS[i], NULL, &old) != 0 || old.sa_handler != SIG_DFL)
+            continue;
+        memset(&sa, 0, sizeof sa);
+        sa.sa_handler = remove_temporaries_and_exit;
+        sigfillset(&sa.sa_mask);
+        sigaction(CLEANUP_SIGNALS[i], &sa, NULL);
+    }
+}
+
+static void block_signals(sigset_t *old)
+{
+    sigset_t set;
+    sigemptyset(&set);
+    for (int i = 0; i < CLEANUP_SIGNAL_COUNT; i++)
+        sigaddset(&set, CLEANUP_SIGNALS[i]);
+    sigprocmask(SIG_BLOCK, &set, old);
+}
+
+static void restore_signals(const sigset_t *old)
+{
+    sigprocmask(SIG_SETMASK, old, NULL);
+}
+
+/* Call with the signals blocked. False when every slot is taken. */
+static bool list_temporary(char *path)
+{
+    for (int i = 0; i < TEMP_SLOTS; i++)
+        if (!temp_slot[i]) {
+            temp_slot[i] = path;
+            if (i >= temp_slots_used)
+                temp_slots_used = i + 1;
+            return true;
+        }
+    return false;
+}
+
+/* Call with the signals blocked. */
+static void unlist_temporary(const char *path)
+{
+    for (int i = 0; i < temp_slots_used; i++)
+        if (temp_slot[i] == path) {
+            temp_slot[i] = NULL;
+            break;
+        }
+    while (temp_slots_used > 0 && !temp_slot[temp_slots_used - 1])
+        temp_slots_used--;
+}
+
+/* ---- the pending outputs of a run (output_set_begin) ---- */
+
+typedef struct {
+    char *tmp_path, *path;
+} Pending;
+
+static bool staging;
+static Pending *pending;
+static int pending_count, pending_cap;
+
+void output_set_begin(void)
+{
+    staging = true;
+}
+
+static bool add_pending(char *tmp_path, char *path)
+{
+    if (pending_count == pending_cap) {
+        int cap = pending_cap ? pending_cap * 2 : 16;
+        Pending *grown = realloc(pending, (size_t)cap * sizeof *grown);
+        if (!grown)
+            return false;
+        pending = grown;
+        pending_cap = cap;
+    }
+    pending[pending_count].tmp_path = tmp_path;
+    pending[pending_count].path = path;
+    pending_count++;
+    return true;
+}
+
+static void forget_dirs(void)
+{
+    sigset_t old;
+    block_signals(&old);
+    int n = dir_slots_used;
+    dir_slots_used = 0;
+    restore_signals(&old);
+    for (int i = 0; i < n; i++) {
+        free(dir_slot[i]);
+        dir_slot[i] = NULL;
+    }
+}
+
+static void end_set(void)
+{
+    free(pending);
+    pending = NULL;
+    pending_count = pending_cap = 0;
+    forget_dirs();
+    staging = false;
+}
+
+bool output_set_publish(Error *err)
+{
+    bool ok = true;
+    for (int i = 0; i < pending_count; i++) {
+        Pending *p = &pending[i];
+        sigset_t old;
+        block_signals(&old);
+        if (ok && rename(p->tmp_path, p->path) != 0) {
+            ok = error_set(err, "cannot write %s: %s", p->path, strerror(errno));
+        }
+        if (!ok)
+            unlink(p->tmp_path);
+        unlist_temporary(p->tmp_path);
+        restore_signals(&old);
+        free(p->tmp_path);
+        free(p->path);
+    }
+    end_set();
+    return ok;
+}
+
+void output_set_abort(void)
+{
+    for (int i = 0; i < pending_count; i++) {
+        sigset_t old;
+        block_signals(&old);
+        unlink(pending[i].tmp_path);
+        unlist_temporary(pending[i].tmp_path);
+        restore_signals(&old);
+        free(pending[i].tmp_path);
+        free(pending[i].path);
+    }
+    /* The directories made for these outputs, deepest first: rmdir removes
+     * only those that are still empty. */
+    for (int i = dir_slots_used - 1; i >= 0; i--)
+        rmdir(dir_slot[i]);
+    end_set();
+}
+
+/* make_dirs made this directory for a pending output. */
+static void note_made_dir(const char *path)
+{
+    if (!staging || dir_slots_used == DIR_SLOTS)
+        return;
+    char *copy = copy_string(path);
+    if (!copy)
+        return;
+    sigset_t old;
+    block_signals(&old);
+    dir_slot[dir_slots_used] = copy;
+    dir_slots_used = dir_slots_used + 1;
+    restore_signals(&old);
 }
 
 static void release(AtomicFile *f)
@@ -61,16 +265,43 @@ static void release(AtomicFile *f)
     f->tmp_path = NULL;
 }
 
-/* Devices and pipes cannot be replaced by a rename: write to them directly. */
+/* Devices and pipes cannot be replaced by a rename: write to them directly.
+ * A pipe is opened without waiting: one that nobody reads is refused (ENXIO)
+ * rather than waited on for ever. */
 static bool open_direct(AtomicFile *f, const char *path, Error *err)
 {
-    f->fp = fopen(path, "wb");
+    int fd = open(path, O_WRONLY | O_NONBLOCK);
+    if (fd < 0) {
+        int e = errno;
+        release(f);
+        if (e == ENXIO)
+            return error_set(err, "cannot write %s: a pipe that nobody reads", path);
+        return error_set(err, "cannot write %s: %s", path, strerror(e));
+    }
+    int flags = fcntl(fd, F_GETFL);
+    if (flags >= 0)
+        fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
+    f->fp = fdopen(fd, "wb");
     if (!f->fp) {
         int e = errno;
+        close(fd);
         release(f);
         return error_set(err, "cannot write %s: %s", path, strerror(e));
     }
     return true;
+}
+
+bool is_stdout_name(const char *path)
+{
+    return path && strcmp(path, "-") == 0;
+}
+
+/* A file no one may write: refused, as a shell's > refuses it, rather than
+ * replaced (a rename needs only the directory's permission). Root may write
+ * anything, so a file without any write bit counts as read-only too. */
+static bool read_only(const char *path, const struct stat *st)
+{
+    return access(path, W_OK) != 0 || (st->st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0;
 }
 
 #define LINK_HOPS_MAX 40 /* as Linux: a longer chain is surely a loop */
@@ -114,6 +345,14 @@ static char *rename_target(const char *path)
 bool atomic_open(AtomicFile *f, const char *path, Error *err)
 {
     memset(f, 0, sizeof *f);
+    if (is_stdout_name(path)) {
+        f->path = copy_string(path);
+        if (!f->path)
+            return error_set(err, "cannot write standard output: out of memory");
+        f->fp = stdout;
+        f->to_stdout = true;
+        return true;
+    }
     const char *base = strrchr(path, '/');
     base = base ? base + 1 : path;
     if (*base == '\0')
@@ -129,6 +368,8 @@ bool atomic_open(AtomicFile *f, const char *path, Error *err)
             return error_set(err, "cannot write %s: out of memory", path);
         return open_direct(f, path, err);
     }
+    if (exists && read_only(path, &st))
+        return error_set(err, "cannot write %s: %s", path, strerror(EACCES));
 
     f->path = rename_target(path);
     f->tmp_path = f->path ? temp_name_for(f->path) : NULL;
@@ -136,9 +377,19 @@ bool atomic_open(AtomicFile *f, const char *path, Error *err)
         release(f);
         return error_set(err, "cannot write %s: out of memory", path);
     }
+    install_handlers();
+    sigset_t old;
+    block_signals(&old);
     int fd = mkstemp(f->tmp_path);
+    int e = errno;
+    if (fd >= 0 && !list_temporary(f->tmp_path)) {
+        close(fd);
+        unlink(f->tmp_path);
+        fd = -1;
+        e = EMFILE;
+    }
+    restore_signals(&old);
     if (fd < 0) {
-        int e = errno;
         release(f);
         return error_set(err, "cannot write %s: %s", path, strerror(e));
     }
@@ -149,9 +400,12 @@ bool atomic_open(AtomicFile *f, const char *path, Error *err)
     fchmod(fd, exists ? st.st_mode & 07777 : NEW_FILE_MODE & ~mask);
     f->fp = fdopen(fd, "wb");
     if (!f->fp) {
-        int e = errno;
+        e = errno;
         close(fd);
+        block_signals(&old);
         unlink(f->tmp_path);
+        unlist_temporary(f->tmp_path);
+        restore_signals(&old);
         release(f);
         return error_set(err, "cannot write %s: %s", path, strerror(e));
     }
@@ -187,13 +441,38 @@ bool atomic_commit(AtomicFile *f, Error *err)
     errno = 0;
     if (fflush(f->fp) != 0 || ferror(f->fp))
         note_failure(f, errno);
+    if (f->to_stdout) {
+        f->fp = NULL;
+        if (f->failed) {
+            int e = f->error_number;
+            error_set(err, "cannot write standard output: %s", e ? strerror(e) : "write failed");
+        }
+        release(f);
+        return !f->failed;
+    }
     errno = 0;
     int closed = fclose(f->fp);
     f->fp = NULL;
     if (closed != 0)
         note_failure(f, errno);
-    if (!f->failed && f->tmp_path && rename(f->tmp_path, f->path) != 0)
-        note_failure(f, errno);
+    if (!f->failed && f->tmp_path && staging) {
+        /* output_set_publish renames it, with the others. */
+        if (add_pending(f->tmp_path, f->path)) {
+            f->tmp_path = NULL;
+            f->path = NULL;
+            return true;
+        }
+        note_failure(f, ENOMEM);
+    }
+    if (!f->failed && f->tmp_path) {
+        sigset_t old;
+        block_signals(&old);
+        if (rename(f->tmp_path, f->path) != 0)
+            note_failure(f, errno);
+        else
+            unlist_temporary(f->tmp_path);
+        restore_signals(&old);
+    }
 
     if (f->failed) {
         int e = f->error_number;
@@ -208,27 +487,61 @@ bool atomic_commit(AtomicFile *f, Error *err)
 
 void atomic_abort(AtomicFile *f)
 {
-    if (f->fp)
+    if (f->fp && !f->to_stdout)
         fclose(f->fp);
-    if (f->tmp_path)
+    if (f->tmp_path) {
+        sigset_t old;
+        block_signals(&old);
         unlink(f->tmp_path);
+        unlist_temporary(f->tmp_path);
+        restore_signals(&old);
+    }
     release(f);
 }
 
 /* Grows the buffer geometrically so that reading a file of n bytes costs O(n). */
 #define READ_CHUNK 65536
 
+/* What a file that is not a regular file is, for a message. */
+static const char *file_kind(mode_t mode)
+{
+    if (S_ISDIR(mode))
+        return strerror(EISDIR);
+    if (S_ISFIFO(mode))
+        return "not a regular file (a pipe)";
+    if (S_ISSOCK(mode))
+        return "not a regular file (a socket)";
+    if (S_ISCHR(mode) || S_ISBLK(mode))
+        return "not a regular file (a device)";
+    return "not a regular file";
+}
+
 bool read_file(const char *path, size_t max_bytes, char **data, size_t *len, Error *err)
 {
     *data = NULL;
     *len = 0;
-    FILE *fp = fopen(path, "rb");
-    if (!fp)
+    /* O_NONBLOCK: opening a pipe for reading would wait for a writer. */
+    int fd = open(path, O_RDONLY | O_NONBLOCK);
+    if (fd < 0)
         return error_set(err, "cannot read %s: %s", path, strerror(errno));
     struct stat st;
-    if (fstat(fileno(fp), &st) == 0 && S_ISDIR(st.st_mode)) {
-        fclose(fp);
-        return error_set(err, "cannot read %s: %s", path, strerror(EISDIR));
+    if (fstat(fd, &st) != 0) {
+        int e = errno;
+        close(fd);
+        return error_set(err, "cannot read %s: %s", path, strerror(e));
+    }
+    if (!S_ISREG(st.st_mode)) {
+        close(fd);
+        return error_set(err, "cannot read %s: %s", path, file_kind(st.st_mode));
+    }
+    int flags = fcntl(fd, F_GETFL);
+    if (flags >= 0)
+        fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
+    FILE *fp = fdopen(fd, "rb");
+    if (!fp) {
+        int e = errno;
+        close(fd);
+        return error_set(err, "cannot read %s: %s", path, strerror(e));
     }
 
     char *buf = NULL;
@@ -274,11 +587,292 @@ bool read_file(const char *path, size_t max_bytes, char **data, size_t *len, Err
     return true;
 }
 
+/* ---- identity ---- */
+
+/* Appends the component [c, c + n) to the absolute path buf (length *len),
+ * taking "." and ".." by name. False when it does not fit. */
+static bool push_component(char *buf, size_t *len, const char *c, size_t n)
+{
+    if (n == 0 || (n == 1 && c[0] == '.'))
+        return true;
+    if (n == 2 && c[0] == '.' && c[1] == '.') {
+        while (*len > 1 && buf[*len - 1] != '/')
+            (*len)--;
+        if (*len > 1)
+            (*len)--; /* the slash, unless it is the root */
+        buf[*len] = '\0';
+        return true;
+    }
+    if (*len + 1 + n + 1 > PATH_TEXT_MAX)
+        return false;
+    if (*len > 1)
+        buf[(*len)++] = '/';
+    memcpy(buf + *len, c, n);
+    *len += n;
+    buf[*len] = '\0';
+    return true;
+}
+
+/* The absolute name of dir with every part that exists resolved by realpath
+ * and the rest (directories still to be made) taken apart by name. */
+static bool resolve_dir(const char *dir, char out[PATH_TEXT_MAX])
+{
+    char *real = realpath(dir, NULL);
+    if (real) {
+        bool fits = strlen(real) < PATH_TEXT_MAX;
+        if (fits)
+            strcpy(out, real);
+        free(real);
+        return fits;
+    }
+    /* The longest prefix that exists: cut the last component, resolve the
+     * rest (recursively), then add the components back by name. */
+    const char *end = dir + strlen(dir);
+    while (end > dir && end[-1] == '/')
+        end--;
+    const char *slash = end;
+    while (slash > dir && slash[-1] != '/')
+        slash--;
+    if (slash == dir) { /* a single relative component */
+        if (!getcwd(out, PATH_TEXT_MAX))
+            return false;
+    } else {
+        size_t n = (size_t)(slash - dir);
+        char *parent = malloc(n + 1);
+        if (!parent)
+            return false;
+        memcpy(parent, dir, n);
+        parent[n] = '\0';
+        bool ok = resolve_dir(parent, out);
+        free(parent);
+        if (!ok)
+            return false;
+    }
+    size_t len = strlen(out);
+    return push_component(out, &len, slash, (size_t)(end - slash));
+}
+
+bool file_id(const char *path, FileId *id)
+{
+    memset(id, 0, sizeof *id);
+    char *name = rename_target(path); /* through a symbolic link, dangling or not */
+    if (!name)
+        return false;
+    const char *slash = strrchr(name, '/');
+    const char *base = slash ? slash + 1 : name;
+    char dir[PATH_TEXT_MAX];
+    bool ok;
+    if (!slash)
+        ok = resolve_dir(".", dir);
+    else if (slash == name)
+        ok = resolve_dir("/", dir);
+    else {
+        size_t n = (size_t)(slash - name);
+        char *d = malloc(n + 1);
+        ok = d != NULL;
+        if (ok) {
+            memcpy(d, name, n);
+            d[n] = '\0';
+            ok = resolve_dir(d, dir);
+            free(d);
+        }
+    }
+    size_t len = ok ? strlen(dir) : 0;
+    ok = ok && push_component(dir, &len, base, strlen(base));
+    if (ok)
+        id->resolved = copy_string(dir);
+    struct stat st;
+    if (stat(name, &st) == 0) {
+        id->exists = true;
+        id->dev = (unsigned long long)st.st_dev;
+        id->ino = (unsigned long long)st.st_ino;
+    }
+    free(name);
+    return id->resolved != NULL;
+}
+
+void file_id_free(FileId *id)
+{
+    free(id->resolved);
+    id->resolved = NULL;
+}
+
+bool file_id_same(const FileId *a, const FileId *b)
+{
+    if (a->exists && b->exists && a->dev == b->dev && a->ino == b->ino)
+        return true;
+    return a->resolved && b->resolved && strcmp(a->resolved, b->resolved) == 0;
+}
+
 bool same_file(const char *a, const char *b)
 {
-    struct stat sa, sb;
-    return stat(a, &sa) == 0 && stat(b, &sb) == 0 &&
-           sa.st_dev == sb.st_dev && sa.st_ino == sb.st_ino;
+    if (strcmp(a, b) == 0)
+        return true;
+    FileId ia = {0}, ib = {0};
+    bool same = file_id(a, &ia) && file_id(b, &ib) && file_id_same(&ia, &ib);
+    file_id_free(&ia);
+    file_id_free(&ib);
+    return same;
+}
+
+/* "step_" digits (four or more) then ".png" or "_depth.png". */
+static bool step_picture_name(const char *base)
+{
+    if (strncmp(base, "step_", 5) != 0)
+        return false;
+    const char *p = base + 5;
+    int digits = 0;
+    while (*p >= '0' && *p <= '9')
+        p++, digits++;
+    return digits >= 4 && (strcmp(p, ".png") == 0 || strcmp(p, "_depth.png") == 0);
+}
+
+bool is_step_picture(const char *path, const char *dir)
+{
+    FileId file = {0}, d = {0};
+    bool in = false;
+    if (file_id(path, &file) && file_id(dir, &d)) {
+        const char *slash = strrchr(file.resolved, '/');
+        size_t n = (size_t)(slash - file.resolved);
+        in = step_picture_name(slash + 1) &&
+             (n == 0 ? strcmp(d.resolved, "/") == 0
+                     : strlen(d.resolved) == n && strncmp(d.resolved, file.resolved, n) == 0);
+    }
+    file_id_free(&file);
+    file_id_free(&d);
+    return in;
+}
+
+/* ---- outputs checked before drawing ---- */
+
+/* The nearest ancestor of path that exists must be a writable directory: then
+ * make_dirs and mkstemp can do their work. dir_of_output names what path is
+ * for the message: "cannot create directory" or "cannot write". */
+static bool ancestor_writable(const char *path, const char *output, Error *err)
+{
+    char *p = copy_string(path);
+    if (!p)
+        return error_set(err, "cannot write %s: out of memory", output);
+    bool ok = true;
+    for (;;) {
+        size_t n = strlen(p);
+        while (n > 1 && p[n - 1] == '/')
+            p[--n] = '\0';
+        struct stat st;
+        if (stat(p, &st) == 0) {
+            if (!S_ISDIR(st.st_mode))
+                ok = error_set(err, "cannot create directory %s: a file of that name exists", p);
+            else if (access(p, W_OK | X_OK) != 0)
+                ok = error_set(err, "cannot write %s: %s", output, strerror(errno));
+            break;
+        }
+        if (errno != ENOENT && errno != ENOTDIR) {
+            ok = error_set(err, "cannot write %s: %s", output, strerror(errno));
+            break;
+        }
+        char *slash = strrchr(p, '/');
+        if (!slash) {
+            strcpy(p, ".");
+        } else if (slash == p) {
+            p[1] = '\0';
+        } else {
+            *slash = '\0';
+        }
+    }
+    free(p);
+    return ok;
+}
+
+/* The directory part of path ("." when there is none). */
+static char *dir_part(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    if (!slash)
+        return copy_string(".");
+    size_t n = slash == path ? 1 : (size_t)(slash - path);
+    char *d = malloc(n + 1);
+    if (d) {
+        memcpy(d, path, n);
+        d[n] = '\0';
+    }
+    return d;
+}
+
+bool output_check(const char *path, Error *err)
+{
+    if (is_stdout_name(path))
+        return true;
+    const char *base = strrchr(path, '/');
+    base = base ? base + 1 : path;
+    if (*base == '\0')
+        return error_set(err, "cannot write %s: no file name (it ends in '/')",
+                         path[0] ? path : "\"\"");
+    struct stat st;
+    if (stat(path, &st) == 0) {
+        if (S_ISDIR(st.st_mode))
+            return error_set(err, "cannot write %s: %s", path, strerror(EISDIR));
+        if (S_ISREG(st.st_mode) && read_only(path, &st))
+            return error_set(err, "cannot write %s: %s", path, strerror(EACCES));
+        if (S_ISFIFO(st.st_mode)) {
+            /* Nobody reads it now: the run would wait for ever. */
+            int fd = open(path, O_WRONLY | O_NONBLOCK);
+            if (fd < 0)
+                return error_set(err, "cannot write %s: %s", path,
+                                 errno == ENXIO ? "a pipe that nobody reads" : strerror(errno));
+            close(fd);
+            return true;
+        }
+        if (!S_ISREG(st.st_mode))
+            return true; /* a device: written directly */
+    } else if (errno == ENAMETOOLONG || errno == ELOOP || errno == EACCES) {
+        return error_set(err, "cannot write %s: %s", path, strerror(errno));
+    }
+    char *name = rename_target(path);
+    char *dir = name ? dir_part(name) : NULL;
+    bool ok = dir ? ancestor_writable(dir, path, err)
+                  : error_set(err, "cannot write %s: out of memory", path);
+    free(dir);
+    free(name);
+    return ok;
+}
+
+bool output_dir_check(const char *dir, Error *err)
+{
+    struct stat st;
+    if (stat(dir, &st) == 0 && !S_ISDIR(st.st_mode))
+        return error_set(err, "cannot create directory %s: a file of that name exists", dir);
+    return ancestor_writable(dir, dir, err);
+}
+
+int stdout_to_stderr_begin(void)
+{
+    fflush(stdout);
+    int saved = dup(STDOUT_FILENO);
+    if (saved >= 0 && dup2(STDERR_FILENO, STDOUT_FILENO) < 0) {
+        close(saved);
+        saved = -1;
+    }
+    return saved;
+}
+
+void stdout_to_stderr_end(int saved)
+{
+    fflush(stdout);
+    if (saved < 0)
+        return;
+    dup2(saved, STDOUT_FILENO);
+    close(saved);
+}
+
+bool stdout_flush(Error *err)
+{
+    errno = 0;
+    if (fflush(stdout) != 0 || ferror(stdout)) {
+        int e = errno;
+        return error_set(err, "cannot write standard output: %s",
+                         e ? strerror(e) : "write failed");
+    }
+    return true;
 }
 
 static bool is_directory(const char *path)
@@ -290,8 +884,10 @@ static bool is_directory(const char *path)
 /* Creates one directory; fine if it already exists as a directory. */
 static bool make_one_dir(const char *path, Error *err)
 {
-    if (mkdir(path, NEW_DIR_MODE) == 0)
+    if (mkdir(path, NEW_DIR_MODE) == 0) {
+        note_made_dir(path);
         return true;
+    }
     int e = errno;
     if (e == EEXIST && is_directory(path))
         return true;

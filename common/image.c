@@ -7,6 +7,7 @@
 #include "image.h"
 
 #include <errno.h>
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -99,32 +100,82 @@ bool image_write_png(const Image *im, const char *path, Error *err)
     return atomic_commit(&f, err);
 }
 
-bool image_read_png(Image *im, const char *path, Error *err)
+/* The eight bytes every PNG file starts with. */
+static const unsigned char PNG_SIGNATURE[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+/* A PNG of 16384 x 16384 pixels that does not compress at all is under 1 GiB. */
+#define PNG_MAX_BYTES ((size_t)1 << 30)
+
+/* stb_image's reasons are terse ("outofmem", "bad zlib header"): say them in
+ * words where they have some, and never print "(null)". */
+static const char *decode_failure(void)
+{
+    const char *why = stbi_failure_reason();
+    if (!why)
+        return "the decoder gave no reason";
+    if (strcmp(why, "outofmem") == 0)
+        return "out of memory";
+    return why;
+}
+
+bool image_decode_png(Image *im, const unsigned char *bytes, size_t len, const char *name,
+                      int want_width, int want_height, Error *err)
 {
     im->width = 0;
     im->height = 0;
     im->rgb = NULL;
-    FILE *fp = fopen(path, "rb");
-    if (!fp)
-        return error_set(err, "cannot read %s: %s", path, strerror(errno));
+    if (len < sizeof PNG_SIGNATURE || memcmp(bytes, PNG_SIGNATURE, sizeof PNG_SIGNATURE) != 0)
+        return error_set(err, "cannot read %s: not a readable PNG (no PNG signature: not a "
+                              "PNG file)", name);
+    if (len > INT_MAX)
+        return error_set(err, "cannot read %s: it is larger than %d bytes", name, INT_MAX);
+    /* The size from the header, before anything is decoded: a small file may
+     * claim a huge picture (a decompression bomb). */
     int width, height, channels_in_file;
+    if (!stbi_info_from_memory(bytes, (int)len, &width, &height, &channels_in_file))
+        return error_set(err, "cannot read %s: not a readable PNG (%s)", name, decode_failure());
+    if (!size_in_range(width, height))
+        return error_set(err, "cannot read %s: image size %dx%d is out of range (1 to %d)",
+                         name, width, height, IMAGE_MAX_SIDE);
+    if (want_width > 0 && (width != want_width || height != want_height))
+        return error_set(err, "%s is %dx%d but the picture is %dx%d", name, width, height,
+                         want_width, want_height);
     /* Asking for 3 channels converts grey, palette and alpha PNGs to RGB. */
-    unsigned char *pixels = stbi_load_from_file(fp, &width, &height, &channels_in_file,
-                                                RGB_CHANNELS);
-    fclose(fp);
+    int w, h;
+    unsigned char *pixels = stbi_load_from_memory(bytes, (int)len, &w, &h, &channels_in_file,
+                                                  RGB_CHANNELS);
     if (!pixels)
-        return error_set(err, "cannot read %s: not a readable PNG (%s)", path,
-                         stbi_failure_reason());
-    bool ok = size_in_range(width, height);
-    if (!ok)
-        error_set(err, "cannot read %s: image size %dx%d is out of range (1 to %d)",
-                  path, width, height, IMAGE_MAX_SIDE);
+        return error_set(err, "cannot read %s: not a readable PNG (%s)", name, decode_failure());
+    bool ok = true;
+    if (w != width || h != height)
+        ok = error_set(err, "cannot read %s: not a readable PNG (its size changed while "
+                            "decoding)", name);
     else if (image_init(im, width, height, err))
         memcpy(im->rgb, pixels, (size_t)width * (size_t)height * RGB_CHANNELS);
     else
         ok = false;
     stbi_image_free(pixels);
     return ok;
+}
+
+bool image_read_png_sized(Image *im, const char *path, int want_width, int want_height,
+                          Error *err)
+{
+    im->width = 0;
+    im->height = 0;
+    im->rgb = NULL;
+    char *data;
+    size_t len;
+    if (!read_file(path, PNG_MAX_BYTES, &data, &len, err))
+        return false;
+    bool ok = image_decode_png(im, (const unsigned char *)data, len, path, want_width,
+                               want_height, err);
+    free(data);
+    return ok;
+}
+
+bool image_read_png(Image *im, const char *path, Error *err)
+{
+    return image_read_png_sized(im, path, 0, 0, err);
 }
 
 /* ---- PFM ---- */

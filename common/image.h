@@ -48,7 +48,18 @@ static inline Rgb image_get(const Image *im, int x, int y)
 }
 
 bool image_write_png(const Image *im, const char *path, Error *err);
-bool image_read_png(Image *im, const char *path, Error *err); /* im is initialised here */
+/* Reads a PNG (only a PNG: the signature is checked) from a regular file. The
+ * size in its header is checked before anything is decoded; a truncated or
+ * malformed file is refused, the message naming the reason. im is
+ * initialised here. */
+bool image_read_png(Image *im, const char *path, Error *err);
+/* The same, refusing (before decoding) a PNG that is not want_width x
+ * want_height: "ref.png is 64x48 but the picture is 800x600". */
+bool image_read_png_sized(Image *im, const char *path, int want_width, int want_height,
+                          Error *err);
+/* The same from bytes in memory; name is for messages. want_width <= 0: any size. */
+bool image_decode_png(Image *im, const unsigned char *bytes, size_t len, const char *name,
+                      int want_width, int want_height, Error *err);
 
 /* values: width * height floats, top row first in memory (flipped on write). */
 bool write_pfm(const float *values, int width, int height, const char *path, Error *err);

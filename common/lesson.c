@@ -5,6 +5,59 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "compare.h"
+#include "file.h"
+
+void run_add_output(Run *run, const char *flag, const char *path)
+{
+    if (path && run->n_extra_out < RUN_EXTRA_OUTPUTS) {
+        run->extra_out_flag[run->n_extra_out] = flag;
+        run->extra_out[run->n_extra_out++] = path;
+    }
+}
+
+/* Before anything is drawn: no output may replace a .mtl file the OBJ read
+ * (known only once it is loaded: a usage error, as for --obj itself), and
+ * every output must be writable (a failure while running). */
+static int check_outputs(Run *run)
+{
+    enum { SHARED = 6, MAX = SHARED + RUN_EXTRA_OUTPUTS };
+    const Options *o = &run->opt;
+    char diff[PATH_TEXT_MAX];
+    bool has_diff = o->compare && o->out && !is_stdout_name(o->out) &&
+                    compare_diff_path(o->out, diff, sizeof diff);
+    const char *name[MAX] = {"--out", "--depth-out", "--overdraw-out", "--id-out", "--world-out",
+                             "the diff picture of --out"};
+    const char *path[MAX] = {o->out, o->depth_out, o->overdraw_out, o->id_out, o->world_out,
+                             has_diff ? diff : NULL};
+    int n = SHARED;
+    for (int i = 0; i < run->n_extra_out; i++, n++) {
+        name[n] = run->extra_out_flag[i];
+        path[n] = run->extra_out[i];
+    }
+    const Mesh *m = &run->render.mesh;
+    for (int k = 0; k < m->nlibraries; k++) {
+        const char *lib = m->libraries[k];
+        for (int i = 0; i < n; i++)
+            if (path[i] && !is_stdout_name(path[i]) && same_file(path[i], lib)) {
+                error_set(&run->err, "%s names %s, a material library that %s reads", name[i],
+                          path[i], o->obj);
+                return EXIT_USAGE;
+            }
+        if (o->steps_dir && is_step_picture(lib, o->steps_dir)) {
+            error_set(&run->err, "--steps would write %s, a material library that %s reads",
+                      lib, o->obj);
+            return EXIT_USAGE;
+        }
+    }
+    for (int i = 0; i < n; i++)
+        if (path[i] && !output_check(path[i], &run->err))
+            return EXIT_RUN_FAILED;
+    if (o->steps_dir && !output_dir_check(o->steps_dir, &run->err))
+        return EXIT_RUN_FAILED;
+    return EXIT_OK;
+}
+
 int run_load(Run *run, const Lesson *lesson, int argc, char **argv)
 {
     memset(run, 0, sizeof *run);
@@ -31,6 +84,11 @@ int run_load(Run *run, const Lesson *lesson, int argc, char **argv)
     if (status != EXIT_OK)
         return error_report(lesson->program, &run->err, status);
     render_print_warnings(&run->render, lesson->program);
+    status = check_outputs(run);
+    if (status != EXIT_OK) {
+        render_free(&run->render);
+        return error_report(lesson->program, &run->err, status);
+    }
     if (!target_init(&run->target, run->opt.width, run->opt.height, &run->err)) {
         render_free(&run->render);
         return error_report(lesson->program, &run->err, EXIT_RUN_FAILED);
@@ -48,6 +106,7 @@ static bool fail(Run *run)
 /* --steps writes the cleared buffer first, then a frame after every face. */
 bool run_draw(Run *run)
 {
+    output_set_begin(); /* every file of the run is published by run_end, or none */
     if (!inspect_begin(&run->inspection, &run->render, &run->target, run->rz, run->rule,
                        &run->opt, &run->err))
         return fail(run);
@@ -64,13 +123,19 @@ bool run_write(Run *run)
     return ok || fail(run);
 }
 
+/* The summary goes to standard output, or to standard error when the picture
+ * went there (--out -). */
 bool run_report(Run *run)
 {
+    bool to_stderr = is_stdout_name(run->opt.out);
+    int saved = to_stderr ? stdout_to_stderr_begin() : -1;
     render_print_summary(stdout, run->lesson->program, &run->render, &run->target, &run->opt);
     fputs(run->note, stdout);
     if (run->lesson->report)
         run->lesson->report(&run->target);
     run->status = inspect_report(stdout, &run->inspection, &run->target, &run->err);
+    if (to_stderr)
+        stdout_to_stderr_end(saved);
     return run->status != EXIT_RUN_FAILED;
 }
 
@@ -78,6 +143,14 @@ int run_end(Run *run)
 {
     target_free(&run->target);
     render_free(&run->render);
+    /* Lost output on standard output is a failure too, and then no file is
+     * published either: the run is all or nothing. */
+    if (run->status != EXIT_RUN_FAILED && !stdout_flush(&run->err))
+        run->status = EXIT_RUN_FAILED;
+    if (run->status == EXIT_RUN_FAILED)
+        output_set_abort();
+    else if (!output_set_publish(&run->err))
+        run->status = EXIT_RUN_FAILED;
     if (run->status == EXIT_RUN_FAILED)
         return error_report(run->lesson->program, &run->err, run->status);
     return run->status;

@@ -6,7 +6,7 @@
  *     run_draw      every face in mesh order through the lesson's draw_face
  *     run_write     the pictures asked for (--out, --depth-out, ...)
  *     run_report    the summary, then --trace, --ascii and --compare
- *     run_end       frees everything; returns the exit status
+ *     run_end       publishes every output (or none), frees; returns the status
  *
  * What a lesson shows but does not teach (a bug on purpose, a comparison)
  * lives in its extras/ and plugs in through Extras. */
@@ -18,6 +18,7 @@
 #include "render.h"
 
 #define RUN_GO (-1) /* run_load: go on and draw */
+#define RUN_EXTRA_OUTPUTS 4
 
 typedef struct Run Run;
 
@@ -48,6 +49,7 @@ struct Run {
     bool (*after_write)(Run *run, Error *err); /* an extra's output, or NULL */
     char note[512];                            /* extras' lines under the summary */
     char default_out[64];                      /* "out/<program>.png" */
+    const char *extra_out[RUN_EXTRA_OUTPUTS], *extra_out_flag[RUN_EXTRA_OUTPUTS]; int n_extra_out;
     Error err;
     int status;
 };
@@ -57,6 +59,7 @@ bool run_draw(Run *run);
 bool run_write(Run *run);
 bool run_report(Run *run);
 int run_end(Run *run);
+void run_add_output(Run *run, const char *flag, const char *path); /* an extra's output */
 void run_note(Run *run, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 #endif

@@ -31,6 +31,9 @@ void mesh_free(Mesh *m)
     for (int i = 0; i < m->nwarnings; i++)
         free(m->warnings[i]);
     free(m->warnings);
+    for (int i = 0; i < m->nlibraries; i++)
+        free(m->libraries[i]);
+    free(m->libraries);
     mesh_init(m);
 }
 

@@ -54,6 +54,7 @@ typedef struct {
     Tri *tris;       int ntris,    cap_tris;
     Material *materials; int nmaterials, cap_materials;
     char **warnings; int nwarnings;             /* e.g. "x.obj:3: mtllib y.mtl not found" */
+    char **libraries; int nlibraries;           /* the .mtl files read: inputs, as the OBJ is */
 } Mesh;
 
 void mesh_init(Mesh *m);

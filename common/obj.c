@@ -335,9 +335,36 @@ static bool read_kd(ObjReader *r, const Lines *l, char *cursor, int material, Er
     return true;
 }
 
+/* A UTF-8 byte order mark, which some editors put at the start of a text file. */
+static const char BYTE_ORDER_MARK[] = "\xef\xbb\xbf";
+
+static void skip_byte_order_mark(const char **text, size_t *len)
+{
+    size_t n = sizeof BYTE_ORDER_MARK - 1;
+    if (*len >= n && memcmp(*text, BYTE_ORDER_MARK, n) == 0) {
+        *text += n;
+        *len -= n;
+    }
+}
+
+/* The .mtl files read are inputs of the run: an output must not replace one. */
+static bool note_library(Mesh *m, const char *path, Error *err)
+{
+    char **grown = realloc(m->libraries, ((size_t)m->nlibraries + 1) * sizeof *grown);
+    if (!grown)
+        return error_set(err, "out of memory");
+    m->libraries = grown;
+    size_t n = strlen(path) + 1;
+    if (!(m->libraries[m->nlibraries] = malloc(n)))
+        return error_set(err, "out of memory");
+    memcpy(m->libraries[m->nlibraries++], path, n);
+    return true;
+}
+
 static bool read_mtl_text(ObjReader *r, const char *text, size_t len, const char *name,
                           Error *err)
 {
+    skip_byte_order_mark(&text, &len);
     Lines l = {.text = text, .len = len, .name = name};
     int material = -1, got;
     bool ok = true;
@@ -403,7 +430,8 @@ static bool read_library(ObjReader *r, const char *lib, Error *err)
     else if (!read_file(path, OBJ_MAX_BYTES, &text, &len, &why))
         ok = warn_at(r, l, err, "material library '%s' not read: %s", quote(lib).s, why.msg);
     else
-        ok = read_mtl_text(r, text, len, path, err) && index_materials(r, err);
+        ok = note_library(r->m, path, err) && read_mtl_text(r, text, len, path, err) &&
+             index_materials(r, err);
     free(text);
     free(path);
     return ok;
@@ -574,6 +602,7 @@ bool mesh_parse_obj(Mesh *m, const char *text, size_t len, const char *name,
 {
     if (len > OBJ_MAX_BYTES)
         return error_set(err, "%s: larger than %zu bytes", name, OBJ_MAX_BYTES);
+    skip_byte_order_mark(&text, &len);
     Mesh fresh;
     mesh_init(&fresh);
     ObjReader r;

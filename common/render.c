@@ -1,6 +1,7 @@
 /* render.c: see render.h. */
 #include "render.h"
 
+#include <ctype.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -14,6 +15,7 @@
 #define FIT_MARGIN 1.05        /* the bounding sphere fills 1 / 1.05 of the view */
 #define FIT_NEAR_FRACTION 0.5  /* near: half the distance to the sphere's front */
 #define FIT_FAR_FACTOR 1.5     /* far: well behind the sphere's back */
+#define FIT_BACK_OFF_STEPS 2100 /* doublings: enough to span every double */
 
 static void render_clear(Render *r)
 {
@@ -279,10 +281,15 @@ static bool write_depth(const Target *t, const Rasterizer *rz, const char *path,
     return ok;
 }
 
+/* Every output is complete before any is published (lesson.c run_end, file.h
+ * output_set_publish); --out - goes to standard output last, once the files
+ * are written, since bytes sent there cannot be taken back. */
 bool render_write(const Render *r, const Target *t, const Rasterizer *rz, const Options *opt,
                   Error *err)
 {
-    if (opt->out && !(make_parent_dirs(opt->out, err) && write_colour(r, t, rz, opt, err)))
+    bool to_stdout = is_stdout_name(opt->out);
+    if (opt->out && !to_stdout &&
+        !(make_parent_dirs(opt->out, err) && write_colour(r, t, rz, opt, err)))
         return false;
     if (opt->depth_out &&
         !(make_parent_dirs(opt->depth_out, err) && write_depth(t, rz, opt->depth_out, err)))
@@ -297,7 +304,7 @@ bool render_write(const Render *r, const Target *t, const Rasterizer *rz, const 
     if (opt->world_out && !(make_parent_dirs(opt->world_out, err) &&
                             world_view_write(&r->mesh, &r->camera, opt->world_out, err)))
         return false;
-    return true;
+    return !to_stdout || write_colour(r, t, rz, opt, err);
 }
 
 bool render_make_parent_dirs(const char *path, Error *err)
@@ -305,10 +312,16 @@ bool render_make_parent_dirs(const char *path, Error *err)
     return make_parent_dirs(path, err);
 }
 
+/* One line each, as error_report prints errors: a control character that came
+ * in with a file name or a line of the file prints as '?'. */
 void render_print_warnings(const Render *r, const char *program)
 {
-    for (int i = 0; i < r->mesh.nwarnings; i++)
-        fprintf(stderr, "%s: warning: %s\n", program, r->mesh.warnings[i]);
+    for (int i = 0; i < r->mesh.nwarnings; i++) {
+        fprintf(stderr, "%s: warning: ", program);
+        for (const char *c = r->mesh.warnings[i]; *c; c++)
+            fputc(iscntrl((unsigned char)*c) ? '?' : *c, stderr);
+        fputc('\n', stderr);
+    }
 }
 
 void render_print_summary(FILE *out, const char *program, const Render *r, const Target *t,
@@ -383,6 +396,15 @@ SceneInfo render_fit_camera(const Mesh *m, int width, int height)
         distance = radius / sin(half) * FIT_MARGIN;
     }
     Vec3 towards_eye = vec3_normalize(vec3(0.35, 0.3, 1.0)); /* front, right, above */
+    /* Far from the origin a small model's distance can vanish in rounding
+     * (1e17 + 3 == 1e17): step back until the eye is really that far from
+     * the target, so that the camera is one, whatever the model. */
+    for (int k = 0; k < FIT_BACK_OFF_STEPS; k++) {
+        Vec3 eye = vec3_add(centre, vec3_scale(towards_eye, distance));
+        if (vec3_length(vec3_sub(eye, centre)) >= distance / 2)
+            break;
+        distance *= 2;
+    }
 
     SceneInfo s = {0};
     s.name = "obj";

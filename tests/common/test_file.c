@@ -17,6 +17,7 @@
 #include <string.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include "file.h"
@@ -383,6 +384,150 @@ static void make_dirs_creates_parents_and_accepts_existing(void **state)
     assert_error(&err, "cannot create directory %s: a file of that name exists", file);
 }
 
+/* ---- identity, before the files exist ---- */
+
+static void same_file_resolves_names_of_files_to_come(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("file_identity");
+    char a[512], dotted[512], up[512], link_path[512], other[512];
+    snprintf(a, sizeof a, "%s/a.png", dir);             /* does not exist */
+    snprintf(dotted, sizeof dotted, "%s/./a.png", dir);
+    snprintf(up, sizeof up, "%s/new/deeper/../../a.png", dir); /* new/ does not exist either */
+    snprintf(link_path, sizeof link_path, "%s/l.png", dir);
+    snprintf(other, sizeof other, "%s/b.png", dir);
+    assert_int_equal(symlink("a.png", link_path), 0); /* dangling */
+    assert_true(same_file(a, dotted));
+    assert_true(same_file(a, up));
+    assert_true(same_file(a, link_path));
+    assert_false(same_file(a, other));
+    char step[512], steps_dir[512];
+    snprintf(steps_dir, sizeof steps_dir, "%s/st", dir);
+    snprintf(step, sizeof step, "%s/st/../st/step_0012_depth.png", dir);
+    assert_true(is_step_picture(step, steps_dir));
+    snprintf(step, sizeof step, "%s/st/step_12.png", dir);
+    assert_false(is_step_picture(step, steps_dir));
+}
+
+/* ---- outputs checked before anything is written ---- */
+
+static void output_check_creates_nothing(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("output_check");
+    Error err;
+    assert_true(output_check(path_join(dir, "x/y/out.png"), &err));
+    assert_true(output_check("-", &err));
+    assert_false(output_check(path_join(dir, "x/y/"), &err));
+    const char *ro = path_join(dir, "ro.txt");
+    write_plain(ro, "old");
+    assert_int_equal(chmod(ro, 0444), 0);
+    assert_false(output_check(ro, &err));
+    assert_error(&err, "cannot write %s: Permission denied", ro);
+    AtomicFile f;
+    assert_false(atomic_open(&f, ro, &err));
+    assert_file_holds(ro, "old");
+    assert_dir_holds_only(dir, "ro.txt"); /* neither x/ nor a temporary file */
+    const char *fifo = path_join(dir, "p");
+    assert_int_equal(mkfifo(fifo, 0666), 0);
+    assert_false(output_check(fifo, &err));
+    assert_error(&err, "cannot write %s: a pipe that nobody reads", fifo);
+    char *data;
+    size_t len;
+    assert_false(read_file(fifo, 100, &data, &len, &err));
+    assert_error(&err, "cannot read %s: not a regular file (a pipe)", fifo);
+}
+
+/* A name of 250 bytes is legal; ".NAME.XXXXXX" would not be: the temporary
+ * name is shortened, the file gets its whole name. */
+static void longest_names_can_be_written(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("atomic_long_name");
+    char name[251];
+    memset(name, 'n', 250);
+    name[250] = '\0';
+    const char *path = path_join(dir, name);
+    AtomicFile f;
+    Error err;
+    assert_true(atomic_open(&f, path, &err));
+    atomic_write(&f, "x", 1);
+    assert_true(atomic_commit(&f, &err));
+    assert_dir_holds_only(dir, name);
+}
+
+/* ---- a run's outputs: all published, or none ---- */
+
+static void output_set_publishes_all_or_none(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("output_set");
+    char a[512], b[512];
+    snprintf(a, sizeof a, "%s/new/a.txt", dir);
+    snprintf(b, sizeof b, "%s/b.txt", dir);
+    write_plain(b, "old");
+    Error err;
+    AtomicFile f;
+    output_set_begin();
+    assert_true(make_dirs(path_join(dir, "new"), &err));
+    assert_true(atomic_open(&f, a, &err));
+    atomic_write(&f, "a", 1);
+    assert_true(atomic_commit(&f, &err));
+    assert_true(atomic_open(&f, b, &err));
+    atomic_write(&f, "b", 1);
+    assert_true(atomic_commit(&f, &err));
+    assert_file_holds(b, "old"); /* not yet */
+    output_set_abort();
+    assert_dir_holds_only(dir, "b.txt"); /* new/ was made for the set: gone too */
+    assert_file_holds(b, "old");
+
+    output_set_begin();
+    assert_true(atomic_open(&f, b, &err));
+    atomic_write(&f, "b", 1);
+    assert_true(atomic_commit(&f, &err));
+    assert_true(output_set_publish(&err));
+    assert_file_holds(b, "b");
+    assert_dir_holds_only(dir, "b.txt");
+}
+
+/* A signal while a temporary file exists removes it; the status is 128 + the
+ * signal. Run in a child, which sends the signal to itself. */
+static void signals_remove_temporary_files(void **state)
+{
+    (void)state;
+    const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++) {
+        const char *dir = test_dir("atomic_signal");
+        char path[512];
+        snprintf(path, sizeof path, "%s/out.bin", dir);
+        fflush(stdout);
+        pid_t pid = fork();
+        assert_true(pid >= 0);
+        if (pid == 0) {
+            signal(sigs[i], SIG_DFL);
+            AtomicFile f;
+            Error err;
+            output_set_begin();
+            if (!atomic_open(&f, path, &err))
+                _exit(3);
+            atomic_write(&f, "x", 1);
+            raise(sigs[i]);
+            _exit(4); /* not reached */
+        }
+        int status;
+        assert_int_equal(waitpid(pid, &status, 0), pid);
+        assert_true(WIFEXITED(status));
+        assert_int_equal(WEXITSTATUS(status), 128 + sigs[i]);
+        DIR *d = opendir(dir);
+        assert_non_null(d);
+        struct dirent *e;
+        while ((e = readdir(d)) != NULL)
+            if (strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0)
+                fail_msg("signal %d left %s", sigs[i], e->d_name);
+        closedir(d);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -402,6 +547,11 @@ int main(void)
         cmocka_unit_test(read_file_errors_name_the_path),
         cmocka_unit_test(same_file_compares_device_and_inode),
         cmocka_unit_test(make_dirs_creates_parents_and_accepts_existing),
+        cmocka_unit_test(same_file_resolves_names_of_files_to_come),
+        cmocka_unit_test(output_check_creates_nothing),
+        cmocka_unit_test(longest_names_can_be_written),
+        cmocka_unit_test(output_set_publishes_all_or_none),
+        cmocka_unit_test(signals_remove_temporary_files),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

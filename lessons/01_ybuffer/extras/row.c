@@ -47,14 +47,43 @@ static bool check_outputs(const Options *opt, Error *err)
                                "the diff picture of --out", "--segments", "--compare"};
     const char *path[PATHS] = {opt->out, opt->extra[FLAG_SCENE_OUT], opt->extra[FLAG_YBUFFER_OUT],
                                has_diff ? diff : NULL, opt->extra[FLAG_SEGMENTS], opt->compare};
+    if (is_stdout_name(opt->out))
+        path[0] = NULL; /* standard output: no file */
+    for (int i = 1; i < PATHS; i++)
+        if (is_stdout_name(path[i]))
+            return error_set(err, "%s: '-' (standard output) is for --out only; name a file",
+                             name[i]);
     for (int i = 0; i < OUTPUTS; i++)
         for (int j = i + 1; j < PATHS; j++) {
             if (!path[i] || !path[j])
                 continue;
-            if (strcmp(path[i], path[j]) == 0 || same_file(path[i], path[j]))
+            if (same_file(path[i], path[j]))
                 return error_set(err, "%s and %s both name %s", name[i], name[j], path[j]);
         }
+    for (int i = 0; opt->steps_dir && i < PATHS; i++) {
+        if (!path[i])
+            continue;
+        if (same_file(path[i], opt->steps_dir))
+            return error_set(err, "%s and --steps both name %s", name[i], path[i]);
+        if (is_step_picture(path[i], opt->steps_dir))
+            return error_set(err, "%s names %s, where --steps writes its pictures", name[i],
+                             path[i]);
+    }
     return true;
+}
+
+/* Before anything is drawn: every output can be written (a failure while
+ * running, status 1, with nothing made). */
+static bool outputs_writable(const Options *opt, Error *err)
+{
+    char diff[PATH_TEXT_MAX];
+    bool has_diff = opt->compare && compare_diff_path(opt->out, diff, sizeof diff);
+    const char *path[] = {opt->out, opt->extra[FLAG_SCENE_OUT], opt->extra[FLAG_YBUFFER_OUT],
+                          has_diff ? diff : NULL};
+    for (size_t i = 0; i < sizeof path / sizeof path[0]; i++)
+        if (path[i] && !output_check(path[i], err))
+            return false;
+    return !opt->steps_dir || output_dir_check(opt->steps_dir, err);
 }
 
 static bool load_segments(const Options *opt, Segment **segs, int *count, Error *err)
@@ -137,7 +166,7 @@ int row_load(Row *row, int argc, char **argv)
     Error *err = &row->err;
     if (!check_outputs(opt, err))
         status = EXIT_USAGE;
-    else if (!load_segments(opt, &row->segs, &row->count, err))
+    else if (!load_segments(opt, &row->segs, &row->count, err) || !outputs_writable(opt, err))
         status = EXIT_RUN_FAILED;
     else if (!(row->order = malloc(((size_t)row->count + 1) * sizeof *row->order)))
         status = EXIT_RUN_FAILED, error_set(err, "out of memory for %d segments", row->count);
@@ -153,6 +182,8 @@ int row_load(Row *row, int argc, char **argv)
         status = ROW_GO;
     if (status == ROW_GO && opt->trace_set)
         ybuffer_trace_column(&row->yb, opt->trace_x);
+    if (status == ROW_GO)
+        output_set_begin(); /* every file of the run is published by row_end, or none */
     row->status = status == ROW_GO ? EXIT_OK : status;
     return status == ROW_GO ? ROW_GO : row_end(row);
 }
@@ -177,16 +208,31 @@ bool row_write(Row *row)
     return false;
 }
 
+/* The summary goes to standard output, or to standard error when the
+ * picture went there (--out -). */
 bool row_report(Row *row)
 {
+    bool to_stderr = is_stdout_name(row->opt.out);
+    int saved = to_stderr ? stdout_to_stderr_begin() : -1;
     print_summary(stdout, &row->yb, row->segs, row->count, row->order);
     print_written(&row->opt, row->count);
     row->status = report_tools(&row->yb, row->segs, &row->opt, &row->err);
+    if (to_stderr)
+        stdout_to_stderr_end(saved);
     return row->status != EXIT_RUN_FAILED;
 }
 
 int row_end(Row *row)
 {
+    /* Lost output on standard output fails the run, and then no file is
+     * published either: all or nothing. */
+    if (row->status != EXIT_RUN_FAILED && row->status != EXIT_USAGE &&
+        !stdout_flush(&row->err))
+        row->status = EXIT_RUN_FAILED;
+    if (row->status == EXIT_RUN_FAILED || row->status == EXIT_USAGE)
+        output_set_abort();
+    else if (!output_set_publish(&row->err))
+        row->status = EXIT_RUN_FAILED;
     int status = row->status;
     if (status == EXIT_USAGE || status == EXIT_RUN_FAILED)
         error_report(CLI.program, &row->err, status);

@@ -149,6 +149,8 @@ bool parse_segments(const char *text, size_t len, const char *source,
     *count = 0;
     int cap = 0;
     size_t pos = 0;
+    if (len >= 3 && memcmp(text, "\xef\xbb\xbf", 3) == 0)
+        pos = 3; /* a UTF-8 byte order mark, as some editors write: not a segment */
     for (int line_no = 1; pos < len; line_no++) {
         const char *line = text + pos;
         const char *newline = memchr(line, '\n', len - pos);

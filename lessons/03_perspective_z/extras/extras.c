@@ -54,8 +54,10 @@ static bool choose(Run *run, Error *err)
     } else if (bug) {
         return error_set(err, "--bug: '%s' is not one of negated-w", bug);
     }
-    if (compare)
+    if (compare) {
         run->after_write = write_compare_naive;
+        run_add_output(run, "--compare-naive", compare);
+    }
     return !compare || compare_naive_path_ok(&run->opt, compare, err);
 }
 

@@ -1,0 +1,429 @@
+/* test_outputs.c: what a run does with its outputs (docs/robustness.md,
+ * "Outputs"), run end to end against the lessons:
+ *
+ *   - two outputs, or an output and an input (OBJ, .mtl, segments, --compare
+ *     reference), that are one file under two names are refused, status 2;
+ *   - a failed output leaves no output of the run new or changed;
+ *   - SIGINT, SIGTERM and SIGHUP during a large write remove the temporary
+ *     files, status 128 + the signal;
+ *   - pipes and other files that are not regular are refused quickly;
+ *   - --out - writes the PNG on standard output, the summary on stderr;
+ *   - a failed write to standard output is a failure (status 1);
+ *   - the --compare reader refuses truncated, malformed and oversized files;
+ *   - and the smaller cases: long names, read-only files, links, a name
+ *     ending in '/', a byte order mark, a model far from the origin, control
+ *     characters in warnings. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <dirent.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "test_support.h"
+
+#define TEXT_MAX 2048
+#define TRIANGLE_OBJ "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
+#define OLD_BYTES "the bytes of an earlier file\n"
+
+/* Entries of dir, "." and ".." aside. */
+static int entries(const char *dir)
+{
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    int n = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL)
+        n += strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0;
+    closedir(d);
+    return n;
+}
+
+/* True when dir holds a file whose name starts with '.' (a temporary file). */
+static bool has_temporary(const char *dir)
+{
+    DIR *d = opendir(dir);
+    if (!d)
+        return false;
+    bool found = false;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL)
+        if (e->d_name[0] == '.' && strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0)
+            found = true;
+    closedir(d);
+    return found;
+}
+
+static void expect_refused(const char *lesson, const char *const *args, int status,
+                           const char *message_fmt, const char *dir)
+{
+    char message[TEXT_MAX];
+    snprintf(message, sizeof message, message_fmt, dir, dir, dir);
+    expect_run_refused(lesson, args, status, message, NULL);
+}
+
+/* The run fails with status and the one line message on stderr; what it
+ * printed on stdout before (the summary, ahead of --compare) does not matter. */
+static void expect_failure(const char *lesson, const char *const *args, int status,
+                           const char *message)
+{
+    RunResult r = run_program(lesson, args);
+    char want[TEXT_MAX];
+    snprintf(want, sizeof want, "%s: error: %s\n", lesson, message);
+    assert_string_equal(r.err, want);
+    assert_int_equal(r.status, status);
+    run_result_free(&r);
+}
+
+/* ---- 1. one file under two names ---- */
+
+static void outputs_and_inputs_are_compared_by_identity(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("outputs_identity");
+    Path a = in_dir(dir, "a.png"), dot_a = in_dir(dir, "./a.png"),
+         up_a = in_dir(dir, "new/../a.png"), sym = in_dir(dir, "link.png"),
+         obj = in_dir(dir, "m.obj"), mtl = in_dir(dir, "m.mtl"), steps = in_dir(dir, "st"),
+         step1 = in_dir(dir, "st/step_0001.png"), hard = in_dir(dir, "hard.obj");
+    write_text(obj.path, "mtllib m.mtl\n" TRIANGLE_OBJ);
+    write_text(mtl.path, "newmtl red\nKd 1 0 0\n");
+    assert_int_equal(symlink("a.png", sym.path), 0); /* dangling: a.png does not exist */
+    assert_int_equal(link(obj.path, hard.path), 0);
+
+    const char *same_name[] = {"--out", a.path, "--depth-out", dot_a.path, NULL};
+    expect_refused("02_zbuffer", same_name, 2, "--out and --depth-out both name %s/./a.png", dir);
+    const char *dotdot[] = {"--out", a.path, "--id-out", up_a.path, NULL};
+    expect_refused("03_perspective_z", dotdot, 2, "--out and --id-out both name %s/new/../a.png",
+                   dir);
+    const char *dangling[] = {"--out", a.path, "--world-out", sym.path, NULL};
+    expect_refused("04_scanline_inverse_z", dangling, 2,
+                   "--out and --world-out both name %s/link.png", dir);
+    const char *hard_link[] = {"--obj", obj.path, "--out", hard.path, NULL};
+    expect_refused("02_zbuffer", hard_link, 2, "--obj and --out both name %s/hard.obj", dir);
+    const char *naive[] = {"--out", a.path, "--compare-naive", dot_a.path, NULL};
+    expect_refused("03_perspective_z", naive, 2, "--out and --compare-naive both name %s/./a.png",
+                   dir);
+    const char *diff[] = {"--out", a.path, "--compare", obj.path, "--depth-out",
+                          in_dir(dir, "./a.diff.png").path, NULL};
+    expect_refused("02_zbuffer", diff, 2,
+                   "--depth-out names %s/a.diff.png, where the diff picture of --out goes", dir);
+    const char *in_steps[] = {"--out", step1.path, "--steps", steps.path, NULL};
+    expect_refused("02_zbuffer", in_steps, 2,
+                   "--out names %s/st/step_0001.png, where --steps writes its pictures", dir);
+    const char *steps01[] = {"--out", step1.path, "--steps", steps.path, NULL};
+    expect_refused("01_ybuffer", steps01, 2,
+                   "--out names %s/st/step_0001.png, where --steps writes its pictures", dir);
+    const char *onto_mtl[] = {"--obj", obj.path, "--out", a.path, "--depth-out", mtl.path, NULL};
+    char want[TEXT_MAX];
+    snprintf(want, sizeof want, "--depth-out names %s, a material library that %s reads",
+             mtl.path, obj.path);
+    expect_run_refused("04_scanline_inverse_z", onto_mtl, 2, want, a.path);
+    char *now = read_text(mtl.path);
+    assert_string_equal(now, "newmtl red\nKd 1 0 0\n");
+    free(now);
+    assert_false(file_exists(a.path));
+    assert_false(file_exists(steps.path));
+}
+
+/* ---- 2. all or nothing ---- */
+
+static void failed_output_leaves_no_output_of_the_run(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("outputs_all_or_nothing");
+    Path out = in_dir(dir, "new/out.png"), old = in_dir(dir, "old.png");
+    write_text(old.path, OLD_BYTES);
+    /* /dev/full fails only when written: after the picture was. */
+    const char *args[] = {"--width", "16", "--height", "16", "--out", out.path, "--id-out",
+                          old.path, "--depth-out", "/dev/full", NULL};
+    const char *all[] = {"02_zbuffer", "03_perspective_z", "04_scanline_inverse_z"};
+    for (size_t i = 0; i < sizeof all / sizeof all[0]; i++) {
+        expect_run_refused(all[i], args, 1, "cannot write /dev/full: No space left on device",
+                           out.path);
+        char *now = read_text(old.path);
+        assert_string_equal(now, OLD_BYTES);
+        free(now);
+        assert_int_equal(entries(dir), 1); /* old.png: no temporary file, no new/ */
+    }
+    /* An unwritable output is found before drawing: nothing is made at all. */
+    const char *trailing[] = {"--out", in_dir(dir, "a/b/c/").path, NULL};
+    char want[TEXT_MAX];
+    snprintf(want, sizeof want, "cannot write %s/a/b/c/: no file name (it ends in '/')", dir);
+    expect_run_refused("02_zbuffer", trailing, 1, want, NULL);
+    expect_run_refused("01_ybuffer", trailing, 1, want, NULL);
+    assert_int_equal(entries(dir), 1);
+}
+
+/* ---- 3. signals ---- */
+
+static pid_t start(const char *program, const char *const *args, int stdout_fd)
+{
+    const char *bin = getenv("BIN_DIR") ? getenv("BIN_DIR") : "build/bin";
+    char path[TEXT_MAX];
+    snprintf(path, sizeof path, "%s/%s", bin, program);
+    fflush(stdout);
+    fflush(stderr);
+    pid_t pid = fork();
+    assert_true(pid >= 0);
+    if (pid == 0) {
+        /* As from a terminal: a background job's shell ignores SIGINT, and
+         * the lesson leaves an ignored signal ignored. */
+        signal(SIGINT, SIG_DFL);
+        signal(SIGTERM, SIG_DFL);
+        signal(SIGHUP, SIG_DFL);
+        int null = open("/dev/null", O_WRONLY);
+        dup2(stdout_fd >= 0 ? stdout_fd : null, STDOUT_FILENO);
+        dup2(null, STDERR_FILENO);
+        char *argv[32] = {path};
+        for (int i = 0; args[i] && i < 30; i++)
+            argv[i + 1] = (char *)args[i];
+        execv(path, argv);
+        _exit(127);
+    }
+    return pid;
+}
+
+static int wait_status(pid_t pid)
+{
+    int status;
+    assert_int_equal(waitpid(pid, &status, 0), pid);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+#define POLL_NS 2000000L /* 2 ms */
+#define POLL_LIMIT 15000 /* 30 s */
+
+static void signal_during_a_large_write_removes_the_temporary_files(void **state)
+{
+    (void)state;
+    const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++) {
+        const char *dir = test_dir("outputs_signal");
+        Path out = in_dir(dir, "out.png"), ids = in_dir(dir, "ids.png"),
+             overdraw = in_dir(dir, "o.pgm");
+        /* Encoding a 2048 x 2048 PNG takes a while; the temporary files of
+         * the outputs written first wait for the last one. */
+        const char *args[] = {"--width", "2048", "--height", "2048", "--out", out.path,
+                              "--overdraw-out", overdraw.path, "--id-out", ids.path, NULL};
+        pid_t pid = start("02_zbuffer", args, -1);
+        int polls = 0;
+        while (!has_temporary(dir) && polls++ < POLL_LIMIT) {
+            struct timespec t = {0, POLL_NS};
+            nanosleep(&t, NULL);
+        }
+        assert_true(polls < POLL_LIMIT);
+        kill(pid, sigs[i]);
+        int status = wait_status(pid);
+        if (status == 0)
+            fail_msg("the run ended before signal %d arrived", sigs[i]);
+        assert_int_equal(status, 128 + sigs[i]);
+        if (entries(dir) != 0)
+            fail_msg("signal %d left %d files in %s", sigs[i], entries(dir), dir);
+    }
+}
+
+/* ---- 4. pipes, standard output ---- */
+
+static void pipes_are_refused_without_waiting(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("outputs_fifo");
+    Path fifo = in_dir(dir, "p"), out = in_dir(dir, "out.png");
+    assert_int_equal(mkfifo(fifo.path, 0666), 0);
+    char want[TEXT_MAX];
+    const char *obj[] = {"--obj", fifo.path, "--out", out.path, NULL};
+    snprintf(want, sizeof want, "cannot read %s: not a regular file (a pipe)", fifo.path);
+    expect_run_refused("02_zbuffer", obj, 1, want, out.path);
+    const char *segments[] = {"--segments", fifo.path, "--out", out.path, NULL};
+    expect_run_refused("01_ybuffer", segments, 1, want, out.path);
+    const char *compare[] = {"--compare", fifo.path, "--out", out.path, NULL};
+    snprintf(want, sizeof want, "--compare: cannot read %s: not a regular file (a pipe)",
+             fifo.path);
+    expect_failure("03_perspective_z", compare, 1, want);
+    snprintf(want, sizeof want, "cannot write %s: a pipe that nobody reads", fifo.path);
+    const char *as_out[] = {"--out", fifo.path, NULL};
+    expect_run_refused("04_scanline_inverse_z", as_out, 1, want, NULL);
+    expect_run_refused("01_ybuffer", as_out, 1, want, NULL);
+    const char *as_depth[] = {"--out", out.path, "--depth-out", fifo.path, NULL};
+    expect_run_refused("02_zbuffer", as_depth, 1, want, out.path);
+}
+
+static void out_dash_writes_the_png_to_standard_output(void **state)
+{
+    (void)state;
+    const char *all[] = {"01_ybuffer", "02_zbuffer"};
+    for (size_t i = 0; i < sizeof all / sizeof all[0]; i++) {
+        const char *args[] = {"--width", "8", "--height", "8", "--out", "-", NULL};
+        RunResult r = run_program(all[i], args);
+        assert_int_equal(r.status, 0);
+        assert_memory_equal(r.out, "\x89PNG\r\n\x1a\n", 8);
+        assert_non_null(strstr(r.err, "drawn") ? r.err : strstr(r.err, "wrote"));
+        run_result_free(&r);
+    }
+    const char *depth[] = {"--out", "out.png", "--depth-out", "-", NULL};
+    expect_run_refused("02_zbuffer", depth, 2,
+                       "--depth-out: '-' (standard output) is for --out only; name a file", NULL);
+}
+
+static void lost_standard_output_is_a_failure(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("outputs_dev_full");
+    Path out = in_dir(dir, "out.png");
+    int full = open("/dev/full", O_WRONLY);
+    assert_true(full >= 0);
+    const char *all[] = {"01_ybuffer", "02_zbuffer", "04_scanline_inverse_z"};
+    for (size_t i = 0; i < sizeof all / sizeof all[0]; i++) {
+        const char *args[] = {"--out", out.path, NULL};
+        assert_int_equal(wait_status(start(all[i], args, full)), 1);
+        assert_false(file_exists(out.path)); /* all or nothing */
+        const char *ascii[] = {"--out", "-", "--width", "8", "--height", "8", NULL};
+        assert_int_equal(wait_status(start(all[i], ascii, full)), 1);
+    }
+    close(full);
+    assert_int_equal(entries(dir), 0);
+}
+
+/* ---- 5. the --compare reader ---- */
+
+static void write_bytes(const char *path, const void *bytes, size_t n)
+{
+    FILE *fp = fopen(path, "wb");
+    assert_non_null(fp);
+    assert_int_equal(fwrite(bytes, 1, n, fp), n);
+    assert_int_equal(fclose(fp), 0);
+}
+
+static void compare_reader_refuses_bad_references(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("outputs_compare_reader");
+    Path out = in_dir(dir, "out.png"), pnm = in_dir(dir, "short.pnm"),
+         big = in_dir(dir, "bomb.png"), cut = in_dir(dir, "cut.png");
+    write_bytes(pnm.path, "P6\n64 48\n255\n", 13); /* a header, no pixels */
+    /* A PNG header that claims 16384 x 16384 pixels: refused before decoding. */
+    static const unsigned char header[] = {
+        0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R',
+        0, 0, 0x40, 0, 0, 0, 0x40, 0, 8, 2, 0, 0, 0, 0, 0, 0, 0};
+    write_bytes(big.path, header, sizeof header);
+    const char *make[] = {"--width", "40", "--height", "30", "--out", out.path, NULL};
+    free(run_ok("02_zbuffer", make));
+    char *png = read_text(out.path);
+    struct stat st;
+    assert_int_equal(stat(out.path, &st), 0);
+    write_bytes(cut.path, png, (size_t)st.st_size / 2);
+    free(png);
+
+    char want[TEXT_MAX];
+    const char *a1[] = {"--width", "64", "--height", "48", "--compare", pnm.path, "--out",
+                        out.path, NULL};
+    snprintf(want, sizeof want, "--compare: cannot read %s: not a readable PNG (no PNG "
+             "signature: not a PNG file)", pnm.path);
+    expect_failure("02_zbuffer", a1, 1, want);
+    const char *a2[] = {"--compare", big.path, "--out", out.path, NULL};
+    snprintf(want, sizeof want, "--compare: %s is 16384x16384 but the picture is 800x600",
+             big.path);
+    expect_failure("02_zbuffer", a2, 1, want);
+    const char *a3[] = {"--width", "40", "--height", "30", "--compare", cut.path, "--out",
+                        out.path, NULL};
+    RunResult r = run_program("02_zbuffer", a3);
+    assert_int_equal(r.status, 1);
+    snprintf(want, sizeof want, "02_zbuffer: error: --compare: cannot read %s: not a readable "
+             "PNG (", cut.path);
+    assert_memory_equal(r.err, want, strlen(want));
+    assert_null(strstr(r.err, "(null)"));
+    run_result_free(&r);
+}
+
+/* ---- 6. the smaller cases ---- */
+
+static void long_names_read_only_files_and_links(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("outputs_small_cases");
+    char name[251];
+    memset(name, 'n', 246);
+    strcpy(name + 246, ".png"); /* 250 characters: legal, though ".NAME.XXXXXX" is not */
+    Path longname = in_dir(dir, name);
+    const char *a1[] = {"--width", "8", "--height", "8", "--out", longname.path, NULL};
+    free(run_ok("02_zbuffer", a1));
+    assert_true(file_exists(longname.path));
+
+    Path ro = in_dir(dir, "ro.png");
+    write_text(ro.path, OLD_BYTES);
+    assert_int_equal(chmod(ro.path, 0444), 0);
+    const char *a2[] = {"--width", "8", "--height", "8", "--out", ro.path, NULL};
+    char want[TEXT_MAX];
+    snprintf(want, sizeof want, "cannot write %s: Permission denied", ro.path);
+    expect_run_refused("02_zbuffer", a2, 1, want, NULL);
+    char *now = read_text(ro.path);
+    assert_string_equal(now, OLD_BYTES);
+    free(now);
+
+    Path target = in_dir(dir, "target.png"), sym = in_dir(dir, "link.png");
+    write_text(target.path, OLD_BYTES);
+    assert_int_equal(symlink("target.png", sym.path), 0);
+    const char *a3[] = {"--width", "8", "--height", "8", "--out", sym.path, NULL};
+    free(run_ok("01_ybuffer", a3));
+    struct stat st;
+    assert_int_equal(lstat(sym.path, &st), 0);
+    assert_true(S_ISLNK(st.st_mode)); /* still a link, */
+    Image im = read_png(target.path); /* and its target holds the picture */
+    image_free(&im);
+}
+
+static void byte_order_marks_far_models_and_warnings(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("outputs_text_cases");
+    Path out = in_dir(dir, "out.png");
+    const char *bom = write_text_in(dir, "bom.obj", "\xef\xbb\xbf" TRIANGLE_OBJ);
+    const char *a1[] = {"--obj", bom, "--out", out.path, NULL};
+    char *o = run_ok("02_zbuffer", a1);
+    expect_line(o, "(1 face): 1 triangle drawn");
+    free(o);
+    const char *seg = write_text_in(dir, "bom.txt", "\xef\xbb\xbf" "0 5 20 5 0 255 0\n");
+    const char *a2[] = {"--segments", seg, "--out", out.path, NULL};
+    free(run_ok("01_ybuffer", a2));
+
+    const char *far = write_text_in(dir, "far.obj", "v 1e17 0 0\nv 1.0000000000000001e17 0 0\n"
+                                                    "v 1e17 1 0\nf 1 2 3\n");
+    const char *a3[] = {"--obj", far, "--out", out.path, NULL};
+    free(run_ok("03_perspective_z", a3));
+
+    const char *warn = write_text_in(dir, "warn.obj", "frob\x1b[31m x\n" TRIANGLE_OBJ);
+    const char *a4[] = {"--obj", warn, "--out", out.path, NULL};
+    RunResult r = run_program("04_scanline_inverse_z", a4);
+    assert_int_equal(r.status, 0);
+    assert_non_null(strstr(r.err, "warning"));
+    for (const char *c = r.err; *c; c++)
+        assert_true(*c == '\n' || (unsigned char)*c >= 0x20);
+    run_result_free(&r);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(outputs_and_inputs_are_compared_by_identity),
+        cmocka_unit_test(failed_output_leaves_no_output_of_the_run),
+        cmocka_unit_test(signal_during_a_large_write_removes_the_temporary_files),
+        cmocka_unit_test(pipes_are_refused_without_waiting),
+        cmocka_unit_test(out_dash_writes_the_png_to_standard_output),
+        cmocka_unit_test(lost_standard_output_is_a_failure),
+        cmocka_unit_test(compare_reader_refuses_bad_references),
+        cmocka_unit_test(long_names_read_only_files_and_links),
+        cmocka_unit_test(byte_order_marks_far_models_and_warnings),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
