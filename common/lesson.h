@@ -7,9 +7,7 @@
  *     run_write     the pictures asked for (--out, --depth-out, ...)
  *     run_report    the summary, then --trace, --ascii and --compare
  *     run_end       publishes every output (or none), frees; returns the status
- *
- * What a lesson shows but does not teach (a bug on purpose, a comparison)
- * lives in its extras/ and plugs in through Extras. */
+ * A lesson's extras/ (bugs on purpose, comparisons) plug in through Extras. */
 #ifndef LESSON_H
 #define LESSON_H
 
@@ -17,8 +15,8 @@
 #include "rasterizer.h"
 #include "render.h"
 
-#define RUN_GO (-1) /* run_load: go on and draw */
-#define RUN_EXTRA_OUTPUTS 4
+#define RUN_GO (-1)          /* run_load: go on and draw */
+#define RUN_EXTRA_OUTPUTS 4 /* outputs extras may add (run_add_output) */
 
 typedef struct Run Run;
 
