@@ -105,16 +105,23 @@ static const unsigned char PNG_SIGNATURE[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 
 /* A PNG of 16384 x 16384 pixels that does not compress at all is under 1 GiB. */
 #define PNG_MAX_BYTES ((size_t)1 << 30)
 
-/* stb_image's reasons are terse ("outofmem", "bad zlib header"): say them in
- * words where they have some, and never print "(null)". */
-static const char *decode_failure(void)
+/* stb_image's reasons are terse ("outofmem", "bad zlib header") and may quote
+ * bytes of the file ("\n\x8c PNG chunk not known"): say them in words where
+ * they have some, print a byte that is not printable ASCII as '?', and never
+ * print "(null)". */
+#define REASON_MAX 64
+static const char *decode_failure(char out[REASON_MAX])
 {
     const char *why = stbi_failure_reason();
     if (!why)
         return "the decoder gave no reason";
     if (strcmp(why, "outofmem") == 0)
         return "out of memory";
-    return why;
+    size_t n = 0;
+    for (; why[n] && n < REASON_MAX - 1; n++)
+        out[n] = why[n] >= 0x20 && why[n] < 0x7f ? why[n] : '?';
+    out[n] = '\0';
+    return out;
 }
 
 bool image_decode_png(Image *im, const unsigned char *bytes, size_t len, const char *name,
@@ -130,9 +137,11 @@ bool image_decode_png(Image *im, const unsigned char *bytes, size_t len, const c
         return error_set(err, "cannot read %s: it is larger than %d bytes", name, INT_MAX);
     /* The size from the header, before anything is decoded: a small file may
      * claim a huge picture (a decompression bomb). */
+    char reason[REASON_MAX];
     int width, height, channels_in_file;
     if (!stbi_info_from_memory(bytes, (int)len, &width, &height, &channels_in_file))
-        return error_set(err, "cannot read %s: not a readable PNG (%s)", name, decode_failure());
+        return error_set(err, "cannot read %s: not a readable PNG (%s)", name,
+                         decode_failure(reason));
     if (!size_in_range(width, height))
         return error_set(err, "cannot read %s: image size %dx%d is out of range (1 to %d)",
                          name, width, height, IMAGE_MAX_SIDE);
@@ -144,7 +153,8 @@ bool image_decode_png(Image *im, const unsigned char *bytes, size_t len, const c
     unsigned char *pixels = stbi_load_from_memory(bytes, (int)len, &w, &h, &channels_in_file,
                                                   RGB_CHANNELS);
     if (!pixels)
-        return error_set(err, "cannot read %s: not a readable PNG (%s)", name, decode_failure());
+        return error_set(err, "cannot read %s: not a readable PNG (%s)", name,
+                         decode_failure(reason));
     bool ok = true;
     if (w != width || h != height)
         ok = error_set(err, "cannot read %s: not a readable PNG (its size changed while "
