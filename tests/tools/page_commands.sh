@@ -185,6 +185,10 @@ dry_run_of() { # command -> the make -n line to run instead, or nothing
 # in the order the page shows them.
 linebuf=""
 command -v stdbuf >/dev/null 2>&1 && linebuf="stdbuf -oL"
+# stdbuf works by preloading a library; a program built with AddressSanitizer
+# (make sanitize) wants its runtime first, and would refuse to start.
+ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}verify_asan_link_order=0"
+export ASAN_OPTIONS
 
 ran=0
 failed=0
