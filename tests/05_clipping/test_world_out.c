@@ -1,0 +1,47 @@
+/* test_world_out.c: --world-out draws the camera, its frustum and the scene
+ * from the side and from above (common/world_view.h) for inside, the lesson's
+ * default scene: a room whose floor, walls and objects reach behind the camera
+ * and through the near plane. The picture is compared with
+ * tests/expected/05_clipping/world_inside.png; the framing itself is checked
+ * by hand in tests/common/test_world_view.c. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "image.h"
+#include "test_support.h"
+#include "world_view.h"
+
+#define PROGRAM "05_clipping"
+
+static void world_view_of_the_default_scene_matches_expected(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("05_clipping_world_out");
+    Path out = in_dir(dir, "out.png"), world = in_dir(dir, "world.png");
+    const char *args[] = {"--out", out.path, "--world-out", world.path, NULL};
+    char *summary = run_ok(PROGRAM, args);
+    char line[TEST_PATH_MAX + 16];
+    snprintf(line, sizeof line, "  wrote %s\n", world.path);
+    expect_line(summary, line);
+    free(summary);
+    Image im = read_png(world.path);
+    expect_count(WORLD_VIEW_WIDTH, im.width, "world view width");
+    expect_count(WORLD_VIEW_HEIGHT, im.height, "world view height");
+    expect_image(&im, PROGRAM, "world_inside");
+    image_free(&im);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(world_view_of_the_default_scene_matches_expected),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
