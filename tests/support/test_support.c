@@ -59,10 +59,11 @@ const char *path_join(const char *dir, const char *file)
     return buf;
 }
 
+/* False for NULL: "no file to look for" (expect_run_refused's no_file). */
 bool file_exists(const char *path)
 {
     struct stat st;
-    return stat(path, &st) == 0;
+    return path && stat(path, &st) == 0;
 }
 
 /* ---- expect_image ---- */
