@@ -1,7 +1,8 @@
 /* test_world_out.c: --world-out draws the camera, its frustum and the scene
- * from the side and from above (common/world_view.h) for triangles3, the lesson's default scene.
- * The picture is compared with tests/expected/02_zbuffer/world_default.png; the framing itself
- * is checked by hand in tests/common/test_world_view.c. */
+ * from the side and from above (common/world_view.h) for triangles3, the
+ * lesson's default scene. The picture is compared with
+ * tests/expected/02_zbuffer/world_default.png; the framing itself is checked
+ * by hand in tests/common/test_world_view.c. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -15,26 +16,13 @@
 #include "file.h"
 #include "image.h"
 #include "test_support.h"
-#include "world_view.h"
 
 #define PROGRAM "02_zbuffer"
 
 static void world_view_of_the_default_scene_matches_expected(void **state)
 {
     (void)state;
-    const char *dir = test_dir("02_zbuffer_world_out");
-    Path out = in_dir(dir, "out.png"), world = in_dir(dir, "world.png");
-    const char *args[] = {"--out", out.path, "--world-out", world.path, NULL};
-    char *summary = run_ok(PROGRAM, args);
-    char line[TEST_PATH_MAX + 16];
-    snprintf(line, sizeof line, "  wrote %s\n", world.path);
-    expect_line(summary, line);
-    free(summary);
-    Image im = read_png(world.path);
-    expect_count(WORLD_VIEW_WIDTH, im.width, "world view width");
-    expect_count(WORLD_VIEW_HEIGHT, im.height, "world view height");
-    expect_image(&im, PROGRAM, "world_default");
-    image_free(&im);
+    expect_default_world_view(PROGRAM, "world_default");
 }
 
 /* An unwritable --world-out is a failure while running (exit 1) that names

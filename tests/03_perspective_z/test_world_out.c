@@ -1,7 +1,8 @@
 /* test_world_out.c: --world-out draws the camera, its frustum and the scene
- * from the side and from above (common/world_view.h) for grazing, the lesson's default scene: two strips at a grazing angle, stretched vertically to read.
- * The picture is compared with tests/expected/03_perspective_z/world_grazing.png; the framing itself
- * is checked by hand in tests/common/test_world_view.c. */
+ * from the side and from above (common/world_view.h) for grazing, the lesson's
+ * default scene: two strips at a grazing angle, stretched vertically to read.
+ * The picture is compared with tests/expected/03_perspective_z/world_grazing.png;
+ * the framing itself is checked by hand in tests/common/test_world_view.c. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -14,26 +15,13 @@
 
 #include "image.h"
 #include "test_support.h"
-#include "world_view.h"
 
 #define PROGRAM "03_perspective_z"
 
 static void world_view_of_the_default_scene_matches_expected(void **state)
 {
     (void)state;
-    const char *dir = test_dir("03_perspective_z_world_out");
-    Path out = in_dir(dir, "out.png"), world = in_dir(dir, "world.png");
-    const char *args[] = {"--out", out.path, "--world-out", world.path, NULL};
-    char *summary = run_ok(PROGRAM, args);
-    char line[TEST_PATH_MAX + 16];
-    snprintf(line, sizeof line, "  wrote %s\n", world.path);
-    expect_line(summary, line);
-    free(summary);
-    Image im = read_png(world.path);
-    expect_count(WORLD_VIEW_WIDTH, im.width, "world view width");
-    expect_count(WORLD_VIEW_HEIGHT, im.height, "world view height");
-    expect_image(&im, PROGRAM, "world_grazing");
-    image_free(&im);
+    expect_default_world_view(PROGRAM, "world_grazing");
 }
 
 int main(void)

@@ -16,26 +16,13 @@
 
 #include "image.h"
 #include "test_support.h"
-#include "world_view.h"
 
 #define PROGRAM "05_clipping"
 
 static void world_view_of_the_default_scene_matches_expected(void **state)
 {
     (void)state;
-    const char *dir = test_dir("05_clipping_world_out");
-    Path out = in_dir(dir, "out.png"), world = in_dir(dir, "world.png");
-    const char *args[] = {"--out", out.path, "--world-out", world.path, NULL};
-    char *summary = run_ok(PROGRAM, args);
-    char line[TEST_PATH_MAX + 16];
-    snprintf(line, sizeof line, "  wrote %s\n", world.path);
-    expect_line(summary, line);
-    free(summary);
-    Image im = read_png(world.path);
-    expect_count(WORLD_VIEW_WIDTH, im.width, "world view width");
-    expect_count(WORLD_VIEW_HEIGHT, im.height, "world view height");
-    expect_image(&im, PROGRAM, "world_inside");
-    image_free(&im);
+    expect_default_world_view(PROGRAM, "world_inside");
 }
 
 int main(void)

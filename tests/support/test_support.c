@@ -8,6 +8,8 @@
 
 #include "test_support.h"
 
+#include "world_view.h"
+
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
@@ -490,4 +492,23 @@ void expect_line(const char *out, const char *line)
 int compare_strings(const void *a, const void *b)
 {
     return strcmp((const char *)a, (const char *)b);
+}
+
+void expect_default_world_view(const char *program, const char *expected)
+{
+    char name[128];
+    snprintf(name, sizeof name, "%s_world_out", program);
+    const char *dir = test_dir(name);
+    Path out = in_dir(dir, "out.png"), world = in_dir(dir, "world.png");
+    const char *args[] = {"--out", out.path, "--world-out", world.path, NULL};
+    char *summary = run_ok(program, args);
+    char line[TEST_PATH_MAX + 16];
+    snprintf(line, sizeof line, "  wrote %s\n", world.path);
+    expect_line(summary, line);
+    free(summary);
+    Image im = read_png(world.path);
+    expect_count(WORLD_VIEW_WIDTH, im.width, "world view width");
+    expect_count(WORLD_VIEW_HEIGHT, im.height, "world view height");
+    expect_image(&im, program, expected);
+    image_free(&im);
 }

@@ -81,6 +81,11 @@ Image read_png(const char *path);
 /* run_program, requiring exit status 0 (else the test fails with the status and
  * stderr); returns stdout, to free(). */
 char *run_ok(const char *program, const char *const *args);
+
+/* Runs program with its default scene and --world-out, checks the summary
+ * names the picture, its documented size, and compares it with
+ * tests/expected/<program>/<expected>.png. */
+void expect_default_world_view(const char *program, const char *expected);
 /* The run must fail with exactly this stderr (whole lines, newline included)
  * and this exit status. */
 void expect_run_error(const char *program, const char *const *args, int status,
