@@ -21,6 +21,8 @@ void mesh_init(Mesh *m)
     memset(m, 0, sizeof *m);
 }
 
+static void free_set(Mesh *m, NameSet *set);
+
 void mesh_free(Mesh *m)
 {
     free(m->verts);
@@ -28,6 +30,9 @@ void mesh_free(Mesh *m)
     free(m->faces);
     free(m->tris);
     free(m->materials);
+    for (int i = 0; i < m->nsets; i++)
+        free_set(m, &m->sets[i]);
+    free(m->sets);
     for (int i = 0; i < m->nwarnings; i++)
         free(m->warnings[i]);
     free(m->warnings);
@@ -73,27 +78,33 @@ int mesh_add_vertex(Mesh *m, Vec3 p, Error *err)
     return m->nverts++;
 }
 
-/* A name that an OBJ/MTL file can carry back: one line, no comment sign, no
- * white space at either end (mtl and usemtl names are read as the rest of the
- * line, trimmed). */
-static bool material_name_ok(const char *name, Error *err)
+/* A name that an OBJ/MTL file can carry back: one line, no comment sign, of
+ * 1 to max - 1 bytes; no white space at either end (mtl, usemtl and o names
+ * are read as the rest of the line, trimmed), or none at all for one word (a
+ * g name). what says which kind of name, for the message. */
+static bool name_ok(const char *what, const char *name, size_t max, bool one_word, Error *err)
 {
     size_t len = strlen(name);
     if (len == 0)
-        return error_set(err, "a material needs a name");
-    if (len >= MATERIAL_NAME_MAX)
-        return error_set(err, "material name '%.*s...' is too long (at most %d bytes)",
-                         MATERIAL_NAME_MAX / 2, name, MATERIAL_NAME_MAX - 1);
+        return error_set(err, "a %s needs a name", what);
+    if (len >= max)
+        return error_set(err, "%s name '%.*s...' is too long (at most %zu bytes)", what,
+                         MATERIAL_NAME_MAX / 2, name, max - 1);
+    const char *blank = " \t\v\f";
     for (size_t i = 0; i < len; i++) {
         unsigned char c = (unsigned char)name[i];
-        if (c == '#' || c == '\n' || c == '\r')
-            return error_set(err, "material name '%s' has a character an MTL file cannot hold",
-                             name);
+        if (c == '#' || c == '\n' || c == '\r' || (one_word && strchr(blank, c)))
+            return error_set(err, "%s name '%s' has a character an %s file cannot hold", what,
+                             name, strcmp(what, "material") == 0 ? "MTL" : "OBJ");
     }
-    const char *blank = " \t\v\f";
     if (strchr(blank, name[0]) || strchr(blank, name[len - 1]))
-        return error_set(err, "material name '%s' starts or ends with white space", name);
+        return error_set(err, "%s name '%s' starts or ends with white space", what, name);
     return true;
+}
+
+static bool material_name_ok(const char *name, Error *err)
+{
+    return name_ok("material", name, MATERIAL_NAME_MAX, false, err);
 }
 
 static double clamp01(double x)
@@ -166,10 +177,107 @@ int mesh_add_face(Mesh *m, const int *vertex_indices, int n, int material, Error
     f->count = n;
     f->material = material;
     f->first_tri = m->ntris;
+    f->names = -1;
     memcpy(m->corners + m->ncorners, vertex_indices, sizeof *vertex_indices * (size_t)n);
     m->ncorners += n;
     m->ntris += triangulate_polygon(pts, n, m->tris + m->ntris, &f->convex);
     if (pts != small)
         free(pts);
     return m->nfaces++;
+}
+
+/* What a name costs in memory, its pointer included: counted against
+ * MESH_MAX_NAME_BYTES, so that a file of a million `g` lines of 64 names each
+ * meets an error, not an exhausted machine. */
+static long long name_cost(const char *name)
+{
+    return (long long)(strlen(name) + 1 + sizeof(char *));
+}
+
+/* A copy of name, counted against MESH_MAX_NAME_BYTES; NULL with err set. */
+static char *copy_name(Mesh *m, const char *name, Error *err)
+{
+    size_t n = strlen(name) + 1;
+    if (m->name_bytes + name_cost(name) > MESH_MAX_NAME_BYTES) {
+        error_set(err, "too many object and group names (at most %d bytes in all)",
+                  MESH_MAX_NAME_BYTES);
+        return NULL;
+    }
+    char *copy = malloc(n);
+    if (!copy) {
+        error_set(err, "out of memory");
+        return NULL;
+    }
+    memcpy(copy, name, n);
+    m->name_bytes += name_cost(name);
+    return copy;
+}
+
+static bool names_ok(const Mesh *m, const char *object, const char *const *groups,
+                     int ngroups, Error *err)
+{
+    if (ngroups < 0 || ngroups > MESH_MAX_GROUPS)
+        return error_set(err, "a face is in at most %d groups, not %d", MESH_MAX_GROUPS,
+                         ngroups);
+    if (m->nsets >= MESH_MAX_NAME_SETS)
+        return error_set(err, "too many object and group changes (at most %d)",
+                         MESH_MAX_NAME_SETS);
+    if (object && !name_ok("object", object, MESH_NAME_MAX, false, err))
+        return false;
+    for (int k = 0; k < ngroups; k++)
+        if (!name_ok("group", groups[k], MESH_NAME_MAX, true, err))
+            return false;
+    return true;
+}
+
+static void free_set(Mesh *m, NameSet *set)
+{
+    if (set->object)
+        m->name_bytes -= name_cost(set->object);
+    free(set->object);
+    for (int k = 0; k < set->ngroups; k++) {
+        m->name_bytes -= name_cost(set->groups[k]);
+        free(set->groups[k]);
+    }
+    free(set->groups);
+}
+
+int mesh_add_names(Mesh *m, const char *object, const char *const *groups, int ngroups,
+                   Error *err)
+{
+    if (!names_ok(m, object, groups, ngroups, err) ||
+        !reserve((void **)&m->sets, &m->cap_sets, m->nsets + 1, sizeof *m->sets, err))
+        return -1;
+    NameSet set = {0};
+    bool ok = ngroups == 0 || (set.groups = malloc(sizeof *set.groups * (size_t)ngroups));
+    if (!ok)
+        error_set(err, "out of memory");
+    if (ok && object)
+        ok = (set.object = copy_name(m, object, err)) != NULL;
+    for (int k = 0; ok && k < ngroups; k++) {
+        bool repeated = false;
+        for (int j = 0; j < set.ngroups && !repeated; j++)
+            repeated = strcmp(set.groups[j], groups[k]) == 0;
+        if (!repeated && (ok = (set.groups[set.ngroups] = copy_name(m, groups[k], err)) != NULL))
+            set.ngroups++;
+    }
+    if (!ok) {
+        free_set(m, &set);
+        return -1;
+    }
+    m->sets[m->nsets] = set;
+    return m->nsets++;
+}
+
+bool mesh_face_in(const Mesh *m, int face, const char *name)
+{
+    if (face < 0 || face >= m->nfaces || m->faces[face].names < 0)
+        return false;
+    const NameSet *set = &m->sets[m->faces[face].names];
+    if (set->object && strcmp(set->object, name) == 0)
+        return true;
+    for (int k = 0; k < set->ngroups; k++)
+        if (strcmp(set->groups[k], name) == 0)
+            return true;
+    return false;
 }

@@ -9,7 +9,9 @@
  *   read_face       f v v/vt v//vn v/vt/vn positive or negative (relative) indices
  *   use_material    usemtl NAME            a name the .mtl files defined
  *   read_libraries  mtllib A.mtl ...       newmtl NAME and Kd r g b from each
- * Anything else is accepted (vt, vn, o, g, s) or ignored with a warning, so
+ *   name_object     o NAME                 the object of the faces that follow
+ *   name_groups     g A B ...              their groups (a bare g: none)
+ * Anything else is accepted (vt, vn, s) or ignored with a warning, so
  * nothing is dropped silently. Every message starts "file:line: ".
  *
  * The mesh is built in a fresh Mesh and handed over only when the whole file
@@ -223,6 +225,7 @@ typedef struct {
     Lines lines;         /* of the OBJ file */
     const char *mtl_dir; /* NULL: .mtl files are not read */
     int material;        /* set by usemtl, -1 for none */
+    int names;           /* set by o and g: index into m->sets, -1 for none */
     int ntexcoords, nnormals;
     NamedMaterial *by_name; /* materials sorted by name, for usemtl */
     int nby_name;
@@ -463,6 +466,42 @@ static bool use_material(ObjReader *r, char *cursor, Error *err)
     return true;
 }
 
+/* ---- Objects and groups ------------------------------------------------ */
+
+/* The faces that follow are in object (NULL: none) and groups: a new set of
+ * names, or none at all. */
+static bool set_names(ObjReader *r, const char *object, const char *const *groups,
+                      int ngroups, Error *err)
+{
+    Error why;
+    r->names = object || ngroups > 0 ? mesh_add_names(r->m, object, groups, ngroups, &why) : -1;
+    if (r->names < 0 && (object || ngroups > 0))
+        return fail_at(&r->lines, err, "%s", why.msg);
+    return true;
+}
+
+/* o NAME (the rest of the line): the groups stay as they are. */
+static bool name_object(ObjReader *r, char *cursor, Error *err)
+{
+    const char *name = rest_of_line(cursor);
+    const NameSet *now = r->names >= 0 ? &r->m->sets[r->names] : NULL;
+    return set_names(r, *name ? name : NULL, now ? (const char *const *)now->groups : NULL,
+                     now ? now->ngroups : 0, err);
+}
+
+/* g A B ...: the object stays as it is. */
+static bool name_groups(ObjReader *r, char *cursor, Error *err)
+{
+    int n = count_words(cursor);
+    if (n > MESH_MAX_GROUPS)
+        return fail_at(&r->lines, err, "'g' names %d groups (at most %d)", n, MESH_MAX_GROUPS);
+    const char *groups[MESH_MAX_GROUPS];
+    for (int k = 0; k < n; k++)
+        groups[k] = next_word(&cursor);
+    const char *object = r->names >= 0 ? r->m->sets[r->names].object : NULL;
+    return set_names(r, object, groups, n, err);
+}
+
 /* ---- Geometry ----------------------------------------------------------- */
 
 static bool read_vertex(ObjReader *r, char *cursor, Error *err)
@@ -536,8 +575,10 @@ static bool read_face(ObjReader *r, char *cursor, Error *err)
         if (!read_corner(r, next_word(&cursor), &r->face[i], err))
             return false;
     Error why;
-    if (mesh_add_face(r->m, r->face, n, r->material, &why) < 0)
+    int face = mesh_add_face(r->m, r->face, n, r->material, &why);
+    if (face < 0)
         return fail_at(l, err, "%s", why.msg);
+    r->m->faces[face].names = r->names;
     return true;
 }
 
@@ -551,8 +592,8 @@ static bool is_one_of(const char *word, const char *const *list)
     return false;
 }
 
-/* Names and smoothing groups: accepted, with nothing to do. */
-static const char *const NOTHING_TO_DO[] = {"o", "g", "s", NULL};
+/* Smoothing groups: accepted, with nothing to do. */
+static const char *const NOTHING_TO_DO[] = {"s", NULL};
 
 static bool read_statement(ObjReader *r, Error *err)
 {
@@ -572,6 +613,10 @@ static bool read_statement(ObjReader *r, Error *err)
         return use_material(r, cursor, err);
     if (strcmp(word, "mtllib") == 0)
         return read_libraries(r, cursor, err);
+    if (strcmp(word, "o") == 0)
+        return name_object(r, cursor, err);
+    if (strcmp(word, "g") == 0)
+        return name_groups(r, cursor, err);
     if (is_one_of(word, NOTHING_TO_DO))
         return true;
     /* l, p, vp, curv, surf, ... and anything unknown. */
@@ -611,6 +656,7 @@ bool mesh_parse_obj(Mesh *m, const char *text, size_t len, const char *name,
     r.lines = (Lines){.text = text, .len = len, .name = name};
     r.mtl_dir = mtl_dir;
     r.material = -1;
+    r.names = -1;
     r.face = malloc(sizeof *r.face * MESH_MAX_FACE_VERTICES);
     bool ok = r.face ? read_obj(&r, err) : error_set(err, "out of memory");
     free(r.face);
@@ -693,6 +739,31 @@ static void write_double(FILE *fp, double x)
     fprintf(fp, " %s", text);
 }
 
+static bool same_name(const char *a, const char *b)
+{
+    return a == b || (a && b && strcmp(a, b) == 0);
+}
+
+/* o and g lines where the names of the faces change from `from` to `to`
+ * (NULL: no names). */
+static void write_names(FILE *fp, const NameSet *from, const NameSet *to)
+{
+    static const NameSet NONE = {0};
+    from = from ? from : &NONE;
+    to = to ? to : &NONE;
+    if (!same_name(from->object, to->object))
+        fprintf(fp, "o%s%s\n", to->object ? " " : "", to->object ? to->object : "");
+    bool same_groups = from->ngroups == to->ngroups;
+    for (int k = 0; same_groups && k < to->ngroups; k++)
+        same_groups = strcmp(from->groups[k], to->groups[k]) == 0;
+    if (same_groups)
+        return;
+    fputc('g', fp);
+    for (int k = 0; k < to->ngroups; k++)
+        fprintf(fp, " %s", to->groups[k]);
+    fputc('\n', fp);
+}
+
 static bool write_mtl(const Mesh *m, const char *mtl_path, Error *err)
 {
     AtomicFile f;
@@ -742,8 +813,12 @@ bool mesh_write_obj(const Mesh *m, const char *path, Error *err)
         fputc('\n', f.fp);
     }
     int material = -1;
+    const NameSet *names = NULL;
     for (int i = 0; i < m->nfaces; i++) {
         const Face *face = &m->faces[i];
+        const NameSet *face_names = face->names >= 0 ? &m->sets[face->names] : NULL;
+        write_names(f.fp, names, face_names);
+        names = face_names;
         if (face->material != material) {
             material = face->material;
             fprintf(f.fp, "usemtl%s%s\n", material >= 0 ? " " : "",

@@ -24,6 +24,26 @@ static void assert_usage_error(const char *const *args, const char *expected_lin
     run_result_free(&r);
 }
 
+static const NameSet NO_NAMES = {0};
+
+static const NameSet *names_of(const Mesh *m, int f)
+{
+    return m->faces[f].names >= 0 ? &m->sets[m->faces[f].names] : &NO_NAMES;
+}
+
+/* The object and groups of face f, as built and as read back (the sets may be
+ * numbered differently: the writer writes names only where they change). */
+static void expect_same_names(const char *scene, int f, const Mesh *built, const Mesh *read)
+{
+    const NameSet *a = names_of(built, f), *b = names_of(read, f);
+    bool same = (a->object == NULL) == (b->object == NULL) && a->ngroups == b->ngroups &&
+                (!a->object || strcmp(a->object, b->object) == 0);
+    for (int k = 0; same && k < a->ngroups; k++)
+        same = strcmp(a->groups[k], b->groups[k]) == 0;
+    if (!same)
+        fail_msg("scene %s, face %d: object and groups did not come back as built", scene, f);
+}
+
 static void every_scene_reads_back_as_itself(void **state)
 {
     (void)state;
@@ -56,6 +76,7 @@ static void every_scene_reads_back_as_itself(void **state)
         for (int f = 0; f < built.nfaces; f++) {
             assert_int_equal(read.faces[f].count, built.faces[f].count);
             assert_int_equal(read.faces[f].material, built.faces[f].material);
+            expect_same_names(s->name, f, &built, &read);
         }
         for (int k = 0; k < built.nmaterials; k++) {
             assert_string_equal(read.materials[k].name, built.materials[k].name);
