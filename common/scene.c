@@ -4,11 +4,13 @@
  * position in its build function is its index (--shade id, --trace). Faces
  * wind counter-clockwise seen from outside (or from the camera, for the flat
  * pieces), though the lessons draw both windings. Every vertex of every scene
- * but the last lies in front of its camera's near plane, since lessons 02 to
- * 04 drop a triangle with a corner behind it rather than clip it; the last,
- * inside, is lesson 05's: its camera stands in a room, and much of the room
- * reaches behind it. */
+ * but inside lies in front of its camera's near plane, since lessons 02 to
+ * 04 drop a triangle with a corner behind it rather than clip it; inside is
+ * lesson 05's: its camera stands in a room, and much of the room reaches
+ * behind it. The scenes of lessons 07 to 09 (decals, crowd, city) are built in
+ * scene_later.c. */
 #include "scene.h"
+#include "scene_parts.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -22,7 +24,7 @@ static int material(Mesh *m, const char *name, double r, double g, double b, Err
 }
 
 /* The vertices p[0 .. n-1], then one face through them in that order. */
-static bool add_polygon(Mesh *m, const Vec3 *p, int n, int mat, Error *err)
+bool add_polygon(Mesh *m, const Vec3 *p, int n, int mat, Error *err)
 {
     int idx[4];
     for (int i = 0; i < n; i++)
@@ -31,7 +33,7 @@ static bool add_polygon(Mesh *m, const Vec3 *p, int n, int mat, Error *err)
     return mesh_add_face(m, idx, n, mat, err) >= 0;
 }
 
-static bool add_quad(Mesh *m, Vec3 a, Vec3 b, Vec3 c, Vec3 d, int mat, Error *err)
+bool add_quad(Mesh *m, Vec3 a, Vec3 b, Vec3 c, Vec3 d, int mat, Error *err)
 {
     Vec3 p[4] = {a, b, c, d};
     return add_polygon(m, p, 4, mat, err);
@@ -40,7 +42,7 @@ static bool add_quad(Mesh *m, Vec3 a, Vec3 b, Vec3 c, Vec3 d, int mat, Error *er
 /* A box: its 8 corners centre + axes[0] * +-1 + axes[1] * +-1 + axes[2] * +-1
  * (axes: half-edges, right-handed), and its 6 faces wound outwards, in the
  * order -x +x -y +y -z +z of its own axes. */
-static bool add_box(Mesh *m, Vec3 centre, const Vec3 axes[3], int mat, Error *err)
+bool add_box(Mesh *m, Vec3 centre, const Vec3 axes[3], int mat, Error *err)
 {
     int v[8]; /* v[i]: bit 0 says +x, bit 1 +y, bit 2 +z */
     for (int i = 0; i < 8; i++) {
@@ -67,7 +69,7 @@ static bool add_box(Mesh *m, Vec3 centre, const Vec3 axes[3], int mat, Error *er
 }
 
 /* An axis-aligned box from its lowest corner lo to its highest hi. */
-static bool add_aligned_box(Mesh *m, Vec3 lo, Vec3 hi, int mat, Error *err)
+bool add_aligned_box(Mesh *m, Vec3 lo, Vec3 hi, int mat, Error *err)
 {
     Vec3 axes[3] = {vec3((hi.x - lo.x) / 2, 0, 0), vec3(0, (hi.y - lo.y) / 2, 0),
                     vec3(0, 0, (hi.z - lo.z) / 2)};
@@ -515,6 +517,18 @@ static const SceneInfo SCENES[] = {
      .about = "a room seen from inside: floor, walls and a table reach behind the camera",
      .eye = {0, 1.6, 0.5}, .target = {0.4, 1.1, -10}, .up = {0, 1, 0},
      .fovy = 60, .near = 0.25, .far = 60},
+    {.name = "decals", .build = build_decals, .coplanar = true,
+     .about = "posters and floor markings lying exactly on their walls and floor (group decal)",
+     .eye = {0, 1.75, 3}, .target = {0, 1.25, -30}, .up = {0, 1, 0},
+     .fovy = 50, .near = 0.5, .far = 100},
+    {.name = "crowd", .build = build_crowd,
+     .about = "192 figures in rows with fences and trees (group cutout), in shuffled order",
+     .eye = {0, 6, 8}, .target = {0, 0.5, -22}, .up = {0, 1, 0},
+     .fovy = 50, .near = 0.5, .far = 100},
+    {.name = "city", .build = build_city,
+     .about = "a tower drawn first in front of a city of 600 small buildings",
+     .eye = {0, 18, 0}, .target = {0, 4, -60}, .up = {0, 1, 0},
+     .fovy = 55, .near = 1, .far = 200},
 };
 
 int scene_count(void)

@@ -15,6 +15,9 @@ typedef struct {
                                                failure the caller still mesh_frees it */
     Vec3 eye, target, up;                   /* the camera that shows it best */
     double fovy, near, far;
+    bool coplanar;                          /* some faces lie exactly on others (decals):
+                                               which one a pixel shows depends on the
+                                               drawing order and on rounding, on purpose */
 } SceneInfo;
 
 int scene_count(void);

@@ -8,7 +8,8 @@
  * two faces are almost exactly as near as each other, rounding may pick the
  * other one: that happens only where faces meet, on polygon edges.
  *
- * For every built-in scene and one OBJ mesh (a sphere pierced by a box),
+ * For every built-in scene (but those whose faces lie on each other by
+ * design, SceneInfo.coplanar) and one OBJ mesh (a sphere pierced by a box),
  * both programs write --id-out; the test asserts that at least 99.9% of
  * the pixels show the same face, that every pixel that differs lies on a
  * polygon edge (a pixel next to a pixel of another face, in either picture),
@@ -100,6 +101,10 @@ static void every_built_in_scene_agrees_with_lesson_03(void **state)
 {
     (void)state;
     for (int i = 0; i < scene_count(); i++) {
+        /* decals: a decal and its wall have equal depths; which one a pixel
+         * shows depends on each lesson's rounding (lesson 07's subject). */
+        if (scene_at(i)->coplanar)
+            continue;
         const char *source[] = {"--scene", scene_at(i)->name, NULL};
         expect_agreement(scene_at(i)->name, source);
     }

@@ -41,6 +41,44 @@ static void assert_vertex(const Mesh *m, int i, double x, double y, double z)
                  z);
 }
 
+static int compare_edges(const void *a, const void *b)
+{
+    const long long *x = a, *y = b;
+    return (*x > *y) - (*x < *y);
+}
+
+/* The faces f with include(m, f) (every face when include is NULL) make
+ * closed surfaces, consistently wound: every directed edge a -> b appears once
+ * among them, and b -> a once too (in the neighbouring face). */
+static void expect_closed(const Mesh *m, bool (*include)(const Mesh *, int), const char *what)
+{
+    int nedges = 0;
+    for (int f = 0; f < m->nfaces; f++)
+        nedges += !include || include(m, f) ? m->faces[f].count : 0;
+    long long *edges = malloc(sizeof *edges * (size_t)nedges);
+    assert_non_null(edges);
+    long long n = m->nverts;
+    int e = 0;
+    for (int f = 0; f < m->nfaces; f++) {
+        if (include && !include(m, f))
+            continue;
+        const Face *face = &m->faces[f];
+        for (int k = 0; k < face->count; k++)
+            edges[e++] = m->corners[face->first + k] * n +
+                         m->corners[face->first + (k + 1) % face->count];
+    }
+    qsort(edges, (size_t)nedges, sizeof *edges, compare_edges);
+    for (int i = 0; i < nedges; i++) {
+        if (i > 0 && edges[i] == edges[i - 1])
+            fail_msg("%s: edge %lld -> %lld is used twice", what, edges[i] / n, edges[i] % n);
+        long long reverse = (edges[i] % n) * n + edges[i] / n;
+        if (!bsearch(&reverse, edges, (size_t)nedges, sizeof *edges, compare_edges))
+            fail_msg("%s: edge %lld -> %lld has no twin: a crack", what, edges[i] / n,
+                     edges[i] % n);
+    }
+    free(edges);
+}
+
 /* ---- Every scene ---- */
 
 static void every_scene_builds_with_faces_finite_vertices_and_colours(void **state)
@@ -70,7 +108,8 @@ static void every_scene_builds_with_faces_finite_vertices_and_colours(void **sta
 static void scene_names_are_unique_and_found(void **state)
 {
     (void)state;
-    const char *expected[] = {"triangles3", "interpenetrate", "cubes", "grazing", "walls", "knot"};
+    const char *expected[] = {"triangles3", "interpenetrate", "cubes", "grazing", "walls",
+                              "knot",       "inside",         "decals", "crowd", "city"};
     for (size_t k = 0; k < sizeof expected / sizeof expected[0]; k++) {
         const SceneInfo *s = scene_find(expected[k]);
         if (!s)
@@ -267,12 +306,6 @@ static Vec3 knot_curve(double t)
     return vec3(r * cos(2 * t), r * sin(2 * t), -sin(3 * t));
 }
 
-static int compare_edges(const void *a, const void *b)
-{
-    const long long *x = a, *y = b;
-    return (*x > *y) - (*x < *y);
-}
-
 static void knot_tube_is_closed_and_wound_outwards(void **state)
 {
     (void)state;
@@ -286,29 +319,7 @@ static void knot_tube_is_closed_and_wound_outwards(void **state)
     assert_int_equal(m.nverts, rings * sides);
     assert_int_equal(m.nfaces, rings * sides);
 
-    /* Closed and consistently wound: every directed edge a -> b appears once,
-     * and b -> a once too (in the neighbouring quad). */
-    int nedges = 4 * m.nfaces;
-    long long *edges = malloc(sizeof *edges * (size_t)nedges);
-    assert_non_null(edges);
-    for (int f = 0; f < m.nfaces; f++) {
-        assert_int_equal(m.faces[f].count, 4);
-        for (int k = 0; k < 4; k++) {
-            long long a = m.corners[m.faces[f].first + k];
-            long long b = m.corners[m.faces[f].first + (k + 1) % 4];
-            edges[4 * f + k] = a * m.nverts + b;
-        }
-    }
-    qsort(edges, (size_t)nedges, sizeof *edges, compare_edges);
-    for (int i = 0; i < nedges; i++) {
-        if (i > 0 && edges[i] == edges[i - 1])
-            fail_msg("edge %lld -> %lld is used twice", edges[i] / m.nverts, edges[i] % m.nverts);
-        long long reverse = (edges[i] % m.nverts) * m.nverts + edges[i] / m.nverts;
-        if (!bsearch(&reverse, edges, (size_t)nedges, sizeof *edges, compare_edges))
-            fail_msg("edge %lld -> %lld has no twin: a crack", edges[i] / m.nverts,
-                     edges[i] % m.nverts);
-    }
-    free(edges);
+    expect_closed(&m, NULL, "knot");
 
     /* Wound outwards: the enclosed volume (divergence theorem, sum over the
      * triangles of a . (b x c) / 6) is positive, and equals the cross-section,
@@ -362,6 +373,262 @@ static void knot_refuses_bad_sizes(void **state)
     mesh_free(&m);
 }
 
+
+/* ---- decals ---- */
+
+static Vec3 corner(const Mesh *m, int f, int k)
+{
+    return m->verts[m->corners[m->faces[f].first + k]];
+}
+
+/* Every corner of face d lies exactly in the plane of face b's first three
+ * corners (a plane worked out here, from b alone), and inside b's bounding box:
+ * the coordinates are multiples of 1/8, so the products are exact. */
+static bool lies_on(const Mesh *m, int d, int b)
+{
+    Vec3 a = corner(m, b, 0);
+    Vec3 n = vec3_cross(vec3_sub(corner(m, b, 1), a), vec3_sub(corner(m, b, 2), a));
+    for (int k = 0; k < m->faces[d].count; k++) {
+        Vec3 p = corner(m, d, k);
+        if (vec3_dot(n, vec3_sub(p, a)) != 0)
+            return false;
+        double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+        for (int j = 0; j < m->faces[b].count; j++) {
+            Vec3 q = corner(m, b, j);
+            double c[3] = {q.x, q.y, q.z};
+            for (int i = 0; i < 3; i++) {
+                lo[i] = fmin(lo[i], c[i]);
+                hi[i] = fmax(hi[i], c[i]);
+            }
+        }
+        double c[3] = {p.x, p.y, p.z};
+        for (int i = 0; i < 3; i++)
+            if (c[i] < lo[i] || c[i] > hi[i])
+                return false;
+    }
+    return true;
+}
+
+static void decals_lie_exactly_on_a_face_drawn_before_them(void **state)
+{
+    (void)state;
+    const SceneInfo *s = scene_find("decals");
+    assert_true(s->coplanar);
+    Mesh m;
+    build("decals", &m);
+    /* The planes scene.c documents: floor y = 0, walls x = -4 and x = 4, end
+     * wall z = -60. */
+    int on_floor = 0, on_walls = 0, decals = 0;
+    for (int d = 0; d < m.nfaces; d++) {
+        if (!mesh_face_in(&m, d, "decal"))
+            continue;
+        decals++;
+        assert_true(mesh_face_in(&m, d, "poster") != mesh_face_in(&m, d, "marking"));
+        int base = -1;
+        for (int b = 0; b < d && base < 0; b++)
+            if (!mesh_face_in(&m, b, "decal") && lies_on(&m, d, b))
+                base = b;
+        if (base < 0)
+            fail_msg("decal face %d lies on no face drawn before it", d);
+        Vec3 p = corner(&m, d, 0);
+        bool all_y0 = true, all_x4 = true, all_z60 = true;
+        for (int k = 0; k < m.faces[d].count; k++) {
+            Vec3 q = corner(&m, d, k);
+            all_y0 = all_y0 && q.y == 0;
+            all_x4 = all_x4 && fabs(q.x) == 4 && q.x == p.x;
+            all_z60 = all_z60 && q.z == -60;
+        }
+        assert_true(all_y0 || all_x4 || all_z60);
+        on_floor += all_y0;
+        on_walls += all_x4;
+        if (mesh_face_in(&m, d, "marking") != all_y0)
+            fail_msg("face %d: a marking is on the floor, a poster on a wall", d);
+    }
+    expect_count(31, decals, "decal faces (8 posters, a sign, 14 dashes, 2 lines, 6 stripes)");
+    expect_count(22, on_floor, "decals on the floor");
+    expect_count(8, on_walls, "decals on the side walls");
+    mesh_free(&m);
+}
+
+/* The ray from eye to p enters the axis-aligned box [lo, hi] before p. */
+static bool ray_hits_box(Vec3 eye, Vec3 p, Vec3 lo, Vec3 hi)
+{
+    double t0 = 0, t1 = 1;
+    double e[3] = {eye.x, eye.y, eye.z}, q[3] = {p.x, p.y, p.z};
+    double l[3] = {lo.x, lo.y, lo.z}, h[3] = {hi.x, hi.y, hi.z};
+    for (int i = 0; i < 3; i++) {
+        double dir = q[i] - e[i];
+        if (dir == 0) {
+            if (e[i] < l[i] || e[i] > h[i])
+                return false;
+            continue;
+        }
+        double a = (l[i] - e[i]) / dir, b = (h[i] - e[i]) / dir;
+        t0 = fmax(t0, fmin(a, b));
+        t1 = fmin(t1, fmax(a, b));
+    }
+    return t0 < t1;
+}
+
+static void decals_pillar_stands_in_front_of_a_poster(void **state)
+{
+    (void)state;
+    const SceneInfo *s = scene_find("decals");
+    Mesh m;
+    build("decals", &m);
+    /* The last face's box is the pillar (no group); the first poster is on
+     * the left wall, z from -5 to -7.5, y from 1 to 2.75. */
+    int last = m.nfaces - 1;
+    assert_false(mesh_face_in(&m, last, "decal"));
+    Vec3 lo = vec3(INFINITY, INFINITY, INFINITY), hi = vec3(-INFINITY, -INFINITY, -INFINITY);
+    for (int f = last - 5; f <= last; f++)
+        for (int k = 0; k < 4; k++) {
+            Vec3 q = corner(&m, f, k);
+            lo = vec3(fmin(lo.x, q.x), fmin(lo.y, q.y), fmin(lo.z, q.z));
+            hi = vec3(fmax(hi.x, q.x), fmax(hi.y, q.y), fmax(hi.z, q.z));
+        }
+    assert_true(hi.x < -3 && lo.x > -4); /* off the wall, near it */
+    int hidden = 0, total = 0;
+    for (double z = -5.0; z >= -7.5; z -= 0.125)
+        for (double y = 1.0; y <= 2.75; y += 0.125, total++)
+            hidden += ray_hits_box(s->eye, vec3(-4, y, z), lo, hi);
+    printf("  decals: the pillar hides %d of %d sample points of the first poster\n", hidden,
+           total);
+    if (hidden * 4 < total || hidden == total)
+        fail_msg("the pillar hides %d of %d points of the poster: expected a good part, not all",
+                 hidden, total);
+    mesh_free(&m);
+}
+
+/* ---- crowd ---- */
+
+static bool solid_and_not_ground(const Mesh *m, int f)
+{
+    return f > 0 && !mesh_face_in(m, f, "cutout");
+}
+
+/* The nearest view depth of face f's corners. */
+static double nearest_depth(const Camera *c, const Mesh *m, int f)
+{
+    double d = INFINITY;
+    for (int k = 0; k < m->faces[f].count; k++)
+        d = fmin(d, camera_project(c, corner(m, f, k)).d);
+    return d;
+}
+
+static void crowd_has_flat_cutouts_closed_figures_and_no_depth_order(void **state)
+{
+    (void)state;
+    const SceneInfo *s = scene_find("crowd");
+    assert_false(s->coplanar);
+    Mesh m;
+    build("crowd", &m);
+    /* 1 ground + 192 figures of 2 boxes + 24 fence panels + 16 trees of a
+     * trunk box and 2 crossed quads. */
+    expect_count(1 + 192 * 12 + 24 + 16 * (6 + 2), m.nfaces, "faces");
+    int cutouts = 0;
+    for (int f = 0; f < m.nfaces; f++) {
+        if (!mesh_face_in(&m, f, "cutout"))
+            continue;
+        cutouts++;
+        /* Flat: the fourth corner in the plane of the first three. */
+        Vec3 a = corner(&m, f, 0);
+        Vec3 n = vec3_cross(vec3_sub(corner(&m, f, 1), a), vec3_sub(corner(&m, f, 2), a));
+        assert_int_equal(m.faces[f].count, 4);
+        assert_true(vec3_dot(n, vec3_sub(corner(&m, f, 3), a)) == 0);
+    }
+    expect_count(24 + 32, cutouts, "cutout faces (fence panels and tree crowns)");
+    expect_closed(&m, solid_and_not_ground, "crowd's boxes");
+
+    /* Neither front to back nor back to front: over all pairs of faces, the
+     * later one is farther about as often as it is nearer. */
+    Camera c;
+    camera_init(&c, s->eye, s->target, s->up, s->fovy, s->near, s->far, 800, 600);
+    double *d = malloc(sizeof *d * (size_t)m.nfaces);
+    assert_non_null(d);
+    for (int f = 0; f < m.nfaces; f++)
+        d[f] = nearest_depth(&c, &m, f);
+    long long farther = 0, nearer = 0;
+    for (int i = 0; i < m.nfaces; i++)
+        for (int j = i + 1; j < m.nfaces; j++) {
+            farther += d[j] > d[i];
+            nearer += d[j] < d[i];
+        }
+    double share = (double)farther / (double)(farther + nearer);
+    printf("  crowd: %.1f%% of face pairs in drawing order go farther\n", 100 * share);
+    if (share < 0.3 || share > 0.7)
+        fail_msg("%.1f%% of face pairs go farther: the order is close to sorted", 100 * share);
+    free(d);
+    mesh_free(&m);
+}
+
+/* ---- city ---- */
+
+static bool not_ground(const Mesh *m, int f)
+{
+    (void)m;
+    return f != 6;
+}
+
+static void city_tower_comes_first_and_hides_most_of_the_city(void **state)
+{
+    (void)state;
+    const SceneInfo *s = scene_find("city");
+    assert_false(s->coplanar);
+    Mesh m;
+    build("city", &m);
+    expect_count(6 + 1 + 600 * 6, m.nfaces, "faces (tower, ground, 600 buildings)");
+    expect_closed(&m, not_ground, "city's boxes");
+    /* The tower, faces 0-5, spans x -60 to 3, y -1 to 45, z -16 to -12; the
+     * camera at (0, 18, 0) sees its front face z = -12 and no side of it, so
+     * a building is hidden when the ray to each of its corners crosses
+     * z = -12 inside that rectangle (both are convex). */
+    assert_true(s->eye.x == 0 && s->eye.y == 18 && s->eye.z == 0);
+    for (int f = 0; f < 6; f++)
+        for (int k = 0; k < 4; k++) {
+            Vec3 q = corner(&m, f, k);
+            assert_true((q.x == -60 || q.x == 3) && (q.y == -1 || q.y == 45) &&
+                        (q.z == -16 || q.z == -12));
+        }
+    int hidden = 0, buildings = 0;
+    for (int f = 7; f < m.nfaces; f += 6, buildings++) {
+        bool all = true;
+        for (int b = f; b < f + 6; b++)
+            for (int k = 0; k < 4; k++) {
+                Vec3 q = corner(&m, b, k);
+                double t = 12 / -q.z; /* eye + t (q - eye) reaches z = -12 */
+                double x = q.x * t, y = 18 + (q.y - 18) * t;
+                all = all && x >= -60 && x <= 3 && y >= -1 && y <= 45;
+            }
+        hidden += all;
+    }
+    printf("  city: the tower hides %d of %d buildings whole\n", hidden, buildings);
+    if (hidden * 2 < buildings || buildings - hidden < 100)
+        fail_msg("the tower hides %d of %d buildings: expected most, with 100 or more left",
+                 hidden, buildings);
+    mesh_free(&m);
+}
+
+static void only_the_scenes_that_say_so_have_groups(void **state)
+{
+    (void)state;
+    for (int i = 0; i < scene_count(); i++) {
+        const SceneInfo *s = scene_at(i);
+        Mesh m;
+        build(s->name, &m);
+        int decal = 0, cutout = 0;
+        for (int f = 0; f < m.nfaces; f++) {
+            decal += mesh_face_in(&m, f, "decal");
+            cutout += mesh_face_in(&m, f, "cutout");
+        }
+        bool decals = strcmp(s->name, "decals") == 0, crowd = strcmp(s->name, "crowd") == 0;
+        if ((decal > 0) != decals || (cutout > 0) != crowd || s->coplanar != decals)
+            fail_msg("scene %s: %d decal faces, %d cutout faces, coplanar %d", s->name, decal,
+                     cutout, s->coplanar);
+        mesh_free(&m);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -374,6 +641,11 @@ int main(void)
         cmocka_unit_test(grazing_strips_follow_their_plane_equations),
         cmocka_unit_test(knot_tube_is_closed_and_wound_outwards),
         cmocka_unit_test(knot_refuses_bad_sizes),
+        cmocka_unit_test(decals_lie_exactly_on_a_face_drawn_before_them),
+        cmocka_unit_test(decals_pillar_stands_in_front_of_a_poster),
+        cmocka_unit_test(crowd_has_flat_cutouts_closed_figures_and_no_depth_order),
+        cmocka_unit_test(city_tower_comes_first_and_hides_most_of_the_city),
+        cmocka_unit_test(only_the_scenes_that_say_so_have_groups),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
