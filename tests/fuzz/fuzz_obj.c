@@ -9,6 +9,9 @@
  *     triangles, each corner a valid vertex, each triangle's corner numbers
  *     in 0 .. count - 1 and all different;
  *   - every vertex is finite and within OBJ_MAX_COORDINATE;
+ *   - every face's names are -1 or a set, whose object and groups are
+ *     non-empty names shorter than MESH_NAME_MAX, the groups all different
+ *     and free of white space, and that mesh_face_in finds;
  *   - every warning and the error are one line starting "f.obj".
  * Sanitizers catch the rest: overflows, leaks, undefined behaviour. */
 #include <stdint.h>
@@ -73,6 +76,30 @@ static void check_message(const char *msg)
     check(strchr(msg, '\n') == NULL, "message is one line");
 }
 
+static void check_name(const char *name)
+{
+    size_t n = strlen(name);
+    check(n > 0 && n < MESH_NAME_MAX, "name length");
+}
+
+static void check_names(const Mesh *m, int face, const NameSet *set)
+{
+    check(set->object || set->ngroups > 0, "a set names something");
+    check(set->ngroups >= 0 && set->ngroups <= MESH_MAX_GROUPS, "group count");
+    if (set->object) {
+        check_name(set->object);
+        check(mesh_face_in(m, face, set->object), "the face is in its object");
+    }
+    for (int k = 0; k < set->ngroups; k++) {
+        check_name(set->groups[k]);
+        check(strcspn(set->groups[k], " \t\v\f\r\n") == strlen(set->groups[k]),
+              "a group name is one word");
+        check(mesh_face_in(m, face, set->groups[k]), "the face is in its groups");
+        for (int j = 0; j < k; j++)
+            check(strcmp(set->groups[j], set->groups[k]) != 0, "groups differ");
+    }
+}
+
 static void check_mesh(const Mesh *m)
 {
     check(m->nfaces > 0, "a mesh read has faces");
@@ -90,6 +117,9 @@ static void check_mesh(const Mesh *m)
         check(f->first >= 0 && f->first + f->count <= m->ncorners, "face corners in range");
         check(f->first_tri == tris, "triangles follow each other");
         check(f->material >= -1 && f->material < m->nmaterials, "material index");
+        check(f->names >= -1 && f->names < m->nsets, "name set index");
+        if (f->names >= 0)
+            check_names(m, i, &m->sets[f->names]);
         for (int k = 0; k < f->count; k++) {
             int v = m->corners[f->first + k];
             check(v >= 0 && v < m->nverts, "corner names a vertex");
