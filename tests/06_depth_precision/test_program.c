@@ -93,7 +93,7 @@ static void default_run_reports_steps_and_bands(void **state)
     expect_line(out, "  depth step (unorm24, standard, near 0.1, far 1000): d = 1: 5.96e-07, "
                      "d = 10: 5.96e-05, d = 100: 0.00596, d = 300: 0.0536\n");
     expect_line(out, "  back plate wins (gap 0.05): d = 1: 0.000, d = 3: 0.000, d = 10: 0.000, "
-                     "d = 30: 0.000, d = 100: 0.000, d = 300: 0.0");
+                     "d = 30: 0.000, d = 100: 0.000, d = 300: 0.065\n");
     free(out);
 }
 
