@@ -280,7 +280,7 @@ static void bad_command_lines_are_refused_with_status_2(void **state)
     const char *scene[] = {"--out", out.path, "--scene", "nope", NULL};
     expect_run_refused(PROGRAM, scene, 2,
                        "--scene: no scene named 'nope' (known: triangles3, interpenetrate, cubes, "
-                       "grazing, walls, knot, inside)",
+                       "grazing, walls, knot, inside, ladder)",
                        out.path);
     const char *width[] = {"--out", out.path, "--width", "0", NULL};
     expect_run_refused(PROGRAM, width, 2, "--width: 0 is out of range (1 to 16384)", out.path);
