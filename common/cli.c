@@ -372,6 +372,23 @@ static bool set_trace(Parser *p, const char *value)
     return true;
 }
 
+/* --far F, or --far inf for a lesson with reversed depth (it takes
+ * --depth-mapping, lesson 06 on): the far plane at infinity, which that
+ * lesson accepts with --depth-mapping reversed only. Any other lesson, and
+ * any other non-finite text, gets "not a finite number". */
+static bool set_far(Parser *p, const char *value)
+{
+    bool takes_mapping = false;
+    for (int i = 0; i < p->spec->n_extra; i++)
+        takes_mapping = takes_mapping || strcmp(p->spec->extra[i].flag, "--depth-mapping") == 0;
+    if (takes_mapping && strcmp(value, "inf") == 0) {
+        p->opt->far = INFINITY;
+        p->opt->far_set = true;
+        return true;
+    }
+    return set_double("--far", value, &p->opt->far, &p->opt->far_set, p->err);
+}
+
 static bool apply_shared_flag(Parser *p, SharedFlagId id, const char *value)
 {
     Options *o = p->opt;
@@ -388,7 +405,7 @@ static bool apply_shared_flag(Parser *p, SharedFlagId id, const char *value)
     case FLAG_UP: return set_vec3(flag, value, &o->up, &o->up_set, err);
     case FLAG_FOVY: return set_double(flag, value, &o->fovy, &o->fovy_set, err);
     case FLAG_NEAR: return set_double(flag, value, &o->near, &o->near_set, err);
-    case FLAG_FAR: return set_double(flag, value, &o->far, &o->far_set, err);
+    case FLAG_FAR: return set_far(p, value);
     case FLAG_SHADE: return set_shade(p, value);
     case FLAG_DEPTH_OUT: return set_path(flag, value, "file", &o->depth_out, err);
     case FLAG_ID_OUT: return set_path(flag, value, "file", &o->id_out, err);

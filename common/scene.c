@@ -16,6 +16,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "ladder.h"
+
 /* ---- Building blocks ---------------------------------------------------- */
 
 static int material(Mesh *m, const char *name, double r, double g, double b, Error *err)
@@ -517,6 +519,10 @@ static const SceneInfo SCENES[] = {
      .about = "a room seen from inside: floor, walls and a table reach behind the camera",
      .eye = {0, 1.6, 0.5}, .target = {0.4, 1.1, -10}, .up = {0, 1, 0},
      .fovy = 60, .near = 0.25, .far = 60},
+    {.name = "ladder", .build = ladder_build, /* lesson 06: ladder.h */
+     .about = "pairs of plates 5 cm apart at d = 1 to 300: where the depth buffer runs out",
+     .eye = {0, 0, 0}, .target = {0, 0, -1}, .up = {0, 1, 0},
+     .fovy = 45, .near = 0.1, .far = 1000},
     {.name = "decals", .build = build_decals, .coplanar = true,
      .about = "posters and floor markings lying exactly on their walls and floor (group decal)",
      .eye = {0, 1.75, 3}, .target = {0, 1.25, -30}, .up = {0, 1, 0},

@@ -111,6 +111,17 @@ l05="$build/bin/05_clipping"
 "$l05" --shade depth --out "$images/05_inside_depth.png" >/dev/null
 echo "make-doc-images: 05_clipping done"
 
+# ---- 06_depth_precision: the ladder in unorm16, unorm24 and reversed
+# float32, and the precision plot at near 0.1, far 1000.
+make -s BUILD="$build" "$build/bin/06_depth_precision"
+l06="$build/bin/06_depth_precision"
+"$l06" --depth-format unorm16 --out "$images/06_ladder_unorm16.png" >/dev/null
+"$l06" --depth-format unorm24 --out "$images/06_ladder_unorm24.png" \
+       --precision-plot "$images/06_precision_plot.png" >/dev/null
+"$l06" --depth-format float32 --depth-mapping reversed \
+       --out "$images/06_ladder_float32_reversed.png" >/dev/null
+echo "make-doc-images: 06_depth_precision done"
+
 # ---- Diagrams drawn by code (tools/diagrams.c): lesson 02's edge functions
 # and top-left rule, lesson 03's d and 1/d along a row, lesson 04's edge walk
 make -s BUILD="$build" "$build/tools/diagrams"

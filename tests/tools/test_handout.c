@@ -183,7 +183,7 @@ static const Mistake MISTAKES[] = {
       "perspective_rule_puts_the_seam_on_the_line",
       "triangles3_depth_is_where_the_ray_meets_the_plane",
       "worked_example_gives_2_5_and_naive_gives_2_7", NULL}},
-    {"04_scanline_inverse_z", "the inverted test", "scanline.c",
+    {"04_scanline_inverse_z", "the inverted test", "depth_buffer.c",
      "bool passed = inv_d > stored;",
      "bool passed = inv_d < stored;",
      false,

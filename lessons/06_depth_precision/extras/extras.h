@@ -1,0 +1,19 @@
+/* extras.h: what lesson 06 shows but does not teach (docs/06_depth_precision.md):
+ *
+ *   --depth-format F, --depth-mapping M   their words, read into a DepthSetup
+ *   --far inf                             with --depth-mapping reversed only
+ *   --precision-plot FILE                 the depth step against distance (plot.c)
+ *   on the ladder scene                   the wrong fraction per band (ladder.h) */
+#ifndef EXTRAS_H
+#define EXTRAS_H
+
+#include "depth_format.h"
+#include "lesson.h"
+
+extern const Extras EXTRAS;
+
+DepthSetup depth_chosen(const Run *run); /* the format, mapping, near and far of the run */
+const char *format_name(DepthFormat format);
+const char *mapping_name(DepthMapping mapping);
+
+#endif

@@ -1,0 +1,15 @@
+/* test_coverage.c: lesson 06 covers pixels by the series' fill rule, like
+ * lessons 02 to 05 (tests/shared/coverage_suite.inc): its buffer changes what
+ * is stored, not which pixels a face covers. Run with a float32 buffer,
+ * reversed, far at 1000: the suite's faces lie between d = 0.1 and 1000. */
+#include "depth_format.h"
+
+#define SUITE_RASTERIZER DEPTH_PRECISION_ZBUFFER
+#include "../shared/coverage_suite.inc"
+
+int main(void)
+{
+    DepthSetup s = depth_setup(FLOAT32, REVERSED, SUITE_NEAR, SUITE_FAR);
+    depth_use(&s);
+    return run_coverage_suite("06_depth_precision");
+}

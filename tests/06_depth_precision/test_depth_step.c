@@ -1,0 +1,212 @@
+/* test_depth_step.c: lesson 06's depth formats and mappings, worked out
+ * independently here: the mappings from their formulas (CONVENTIONS), the
+ * depth step by brute force over the values the format can hold (integer
+ * codes, nextafterf), the issue's figures at near 0.1, far 1000, d = 100
+ * worked out on paper, and the depth test's direction, clear value and ties. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "depth_format.h"
+#include "scanline.h"
+#include "test_support.h"
+
+#define NEAR 0.1
+#define FAR 1000.0
+
+/* z_w of d, straight from the formulas of CONVENTIONS.md. */
+static double z_of(DepthMapping m, double n, double f, double d)
+{
+    if (m == STANDARD)
+        return f / (f - n) * (1 - n / d);
+    return isinf(f) ? n / d : n / (f - n) * (f / d - 1);
+}
+
+/* ... and d of z_w, the same formulas solved for d. */
+static double d_of(DepthMapping m, double n, double f, double z)
+{
+    if (m == STANDARD)
+        return n / (1 - z * (f - n) / f);
+    return isinf(f) ? n / z : n * f / (z * (f - n) + n);
+}
+
+/* The step at d by brute force: the value the format holds for z_w(d), the
+ * next one it can hold towards the far plane, and how far apart in d they are. */
+static double brute_step(DepthFormat fmt, DepthMapping m, double n, double f, double d)
+{
+    double z = z_of(m, n, f, d), toward = m == STANDARD ? 1 : -1, z0, z1;
+    if (fmt == FLOAT32) {
+        float zf = (float)z;
+        z0 = zf;
+        z1 = nextafterf(zf, (float)(2 * toward));
+    } else {
+        double max = fmt == UNORM16 ? 65535.0 : 16777215.0, code = floor(z * max + 0.5);
+        z0 = code / max;
+        z1 = (code + toward) / max;
+    }
+    return fabs(d_of(m, n, f, z1) - d_of(m, n, f, z0));
+}
+
+static void step_matches_brute_force_for_every_format_and_mapping(void **state)
+{
+    (void)state;
+    const double fars[] = {FAR, 100.0, INFINITY};
+    const double ds[] = {0.13, 0.5, 1, 2.7, 10, 33, 100, 310, 950};
+    int checked = 0;
+    for (int fi = 0; fi < 3; fi++)
+        for (int fmt = 0; fmt < 3; fmt++)
+            for (int m = 0; m < 2; m++) {
+                double f = fars[fi];
+                if (isinf(f) && m == STANDARD)
+                    continue;
+                DepthSetup s = depth_setup((DepthFormat)fmt, (DepthMapping)m, NEAR, f);
+                for (size_t k = 0; k < sizeof ds / sizeof ds[0]; k++) {
+                    double d = ds[k];
+                    if (d >= f)
+                        continue;
+                    double want = brute_step((DepthFormat)fmt, (DepthMapping)m, NEAR, f, d);
+                    double got = depth_step(&s, d);
+                    /* One step of the format, measured from the value held
+                     * (within half a step of z_w(d)) rather than from z_w(d)
+                     * as a slope: they differ by about step / d, relatively. */
+                    double tolerance = want * (3 * want / d + 1e-6);
+                    if (fabs(got - want) > tolerance)
+                        fail_msg("format %d mapping %d far %g d %g: depth_step %.9g, brute "
+                                 "force %.9g", fmt, m, f, d, got, want);
+                    assert_true(fabs(window_depth(&s, d) - z_of((DepthMapping)m, NEAR, f, d)) <
+                                1e-12);
+                    checked++;
+                }
+            }
+    expect_count(117, checked, "steps checked");
+}
+
+/* The issue's figures, on paper: |dz_w/dd| = f n / ((f - n) d^2) = 0.1 / 0.9999
+ * * 1e-4 at d = 100 for both mappings; z_w(100) is 0.9991 (standard, a float32
+ * step of 2^-24 in [1/2, 1)) and 0.00090009 (reversed, in [2^-11, 2^-10): a
+ * step of 2^-34). unorm16 steps by 1/65535, unorm24 by 1/16777215. */
+static void issue_figures_at_near_0_1_far_1000_d_100(void **state)
+{
+    (void)state;
+    const struct {
+        DepthFormat fmt;
+        DepthMapping m;
+        double metres;
+    } FIG[] = {
+        {UNORM16, STANDARD, 1.5257496},   {UNORM16, REVERSED, 1.5257496},
+        {UNORM24, STANDARD, 0.0059598688}, {UNORM24, REVERSED, 0.0059598688},
+        {FLOAT32, STANDARD, 0.0059598684}, {FLOAT32, REVERSED, 5.8201840e-6},
+    };
+    for (size_t k = 0; k < sizeof FIG / sizeof FIG[0]; k++) {
+        DepthSetup s = depth_setup(FIG[k].fmt, FIG[k].m, NEAR, FAR);
+        double got = depth_step(&s, 100);
+        if (fabs(got - FIG[k].metres) > 1e-6 * FIG[k].metres)
+            fail_msg("format %d mapping %d: step at d = 100 is %.9g m, the page says %.9g m",
+                     FIG[k].fmt, FIG[k].m, got, FIG[k].metres);
+    }
+}
+
+/* Round to nearest, codes clamped to [0, 2^bits - 1]; float32 as it is. */
+static void encode_rounds_to_the_nearest_code(void **state)
+{
+    (void)state;
+    assert_true(encode_depth(UNORM16, 0.0f) == 0.0f);
+    assert_true(encode_depth(UNORM16, 1.0f) == 65535.0f);
+    assert_true(encode_depth(UNORM24, 1.0f) == 16777215.0f);
+    assert_true(encode_depth(UNORM16, 0.5f) == 32768.0f);           /* 32767.5 rounds up */
+    assert_true(encode_depth(UNORM16, 0.4999f) == 32761.0f);        /* 32760.95 */
+    assert_true(encode_depth(UNORM16, 1.0f / 65535 * 0.49f) == 0.0f); /* under half a code */
+    assert_true(encode_depth(UNORM16, 1.5f) == 65535.0f);           /* clamped */
+    assert_true(encode_depth(UNORM24, -0.25f) == 0.0f);
+    assert_true(encode_depth(FLOAT32, 0.3f) == 0.3f);
+}
+
+static Target one_pixel(void)
+{
+    Target t;
+    Error err;
+    assert_true(target_init(&t, 1, 1, &err));
+    return t;
+}
+
+/* 1/d of the fragment for depth_test: 1 / d as the scanline hands it. */
+static float inv(double d)
+{
+    return (float)(1.0 / d);
+}
+
+static void standard_clears_to_one_and_keeps_the_smaller(void **state)
+{
+    (void)state;
+    DepthSetup s = depth_setup(UNORM24, STANDARD, NEAR, FAR);
+    depth_use(&s);
+    Target t = one_pixel();
+    clear_depth(&t);
+    assert_true(t.depth[0] == 16777215.0f);
+    assert_true(depth_test(&t, 0, 0, inv(500)));  /* anything before far wins */
+    assert_true(depth_test(&t, 0, 1, inv(2)));    /* nearer wins */
+    assert_false(depth_test(&t, 0, 2, inv(3)));   /* farther loses */
+    expect_count(1, t.face[0], "the nearest face");
+    /* z_w(2) = 1000/999.9 (1 - 0.05) = 0.95009501, times 2^24 - 1: 15939948.2 */
+    assert_true(t.depth[0] == 15939948.0f);
+    target_free(&t);
+}
+
+static void reversed_clears_to_zero_and_keeps_the_larger(void **state)
+{
+    (void)state;
+    DepthSetup s = depth_setup(FLOAT32, REVERSED, NEAR, INFINITY);
+    depth_use(&s);
+    Target t = one_pixel();
+    clear_depth(&t);
+    assert_true(t.depth[0] == 0.0f);
+    assert_true(depth_test(&t, 0, 0, inv(1e6))); /* far = inf: a million away still wins */
+    assert_true(depth_test(&t, 0, 1, inv(4)));
+    assert_false(depth_test(&t, 0, 2, inv(8)));
+    expect_count(1, t.face[0], "the nearest face");
+    assert_true(t.depth[0] == (float)(0.1 * (double)inv(4))); /* z_w = n/d */
+    target_free(&t);
+}
+
+/* Two fragments that store the same code: the first one drawn keeps the pixel. */
+static void a_tie_keeps_the_first_fragment(void **state)
+{
+    (void)state;
+    DepthSetup s = depth_setup(UNORM16, STANDARD, NEAR, FAR);
+    depth_use(&s);
+    Target t = one_pixel();
+    clear_depth(&t);
+    /* At d = 100 one unorm16 code spans about 1.5 m: 100 and 100.05 tie. */
+    assert_true(depth_test(&t, 0, 7, inv(100.05)));
+    assert_false(depth_test(&t, 0, 8, inv(100)));
+    expect_count(7, t.face[0], "the first face drawn");
+    target_free(&t);
+    s = depth_setup(FLOAT32, REVERSED, NEAR, FAR); /* there they are told apart */
+    depth_use(&s);
+    t = one_pixel();
+    clear_depth(&t);
+    assert_true(depth_test(&t, 0, 7, inv(100.05)));
+    assert_true(depth_test(&t, 0, 8, inv(100)));
+    expect_count(8, t.face[0], "the nearer face");
+    target_free(&t);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(step_matches_brute_force_for_every_format_and_mapping),
+        cmocka_unit_test(issue_figures_at_near_0_1_far_1000_d_100),
+        cmocka_unit_test(encode_rounds_to_the_nearest_code),
+        cmocka_unit_test(standard_clears_to_one_and_keeps_the_smaller),
+        cmocka_unit_test(reversed_clears_to_zero_and_keeps_the_larger),
+        cmocka_unit_test(a_tie_keeps_the_first_fragment),
+    };
+    return cmocka_run_group_tests_name("06_depth_precision depth step", tests, NULL, NULL);
+}

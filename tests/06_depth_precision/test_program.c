@@ -1,0 +1,202 @@
+/* test_program.c: build/bin/06_depth_precision run end to end: the ladder in
+ * every format and mapping (its picture, and the fraction of each band where
+ * the back plate wins, scored from --id-out as a GPU's picture would be),
+ * agreement with lesson 05 at float32 on the other built-in scenes, the
+ * precision plot, --far inf, and how it refuses bad input. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "image.h"
+#include "ladder.h"
+#include "scene.h"
+#include "test_support.h"
+
+#define PROGRAM "06_depth_precision"
+#define GROUP "06_depth_precision"
+#define AGREEMENT_DIFFERING 0L
+
+static const char *const FORMATS[3] = {"unorm16", "unorm24", "float32"};
+static const char *const MAPPINGS[2] = {"standard", "reversed"};
+
+/* The depth step at d, near 0.1, far 1000, on paper: one step of z_w over
+ * |dz_w/dd| = f n / ((f - n) d^2). unorm: 1 / (2^bits - 1); float32
+ * standard: z_w is near 1 past d = 0.2, a step of 2^-24; float32 reversed is
+ * not needed here (its steps are below 1e-4 m everywhere up to d = 1000). */
+static double paper_step(int format, double d)
+{
+    double q = format == 0 ? 1 / 65535.0 : 1 / 16777215.0; /* float32 standard ~ unorm24 */
+    return q * d * d * (1000 - 0.1) / (1000 * 0.1);
+}
+
+static void score_ladder(const char *format, const char *mapping, const char *dir,
+                         LadderScore *s, Image *picture)
+{
+    Path out = in_dir(dir, "ladder.png"), id = in_dir(dir, "ladder_id.png");
+    const char *args[] = {"--width", "400", "--height", "300", "--depth-format", format,
+                          "--depth-mapping", mapping, "--out", out.path, "--id-out", id.path,
+                          NULL};
+    free(run_ok(PROGRAM, args));
+    Error err;
+    if (!ladder_score_id_png(id.path, s, &err))
+        fail_msg("%s", err.msg);
+    *picture = read_png(out.path);
+}
+
+/* Every band draws; where the step is well under the gap (half of it, over
+ * the band's +-5% of depth) no pixel of the back plate wins; where it is
+ * well over (twice the gap) most do; reversed float32 never lets it win. */
+static void ladder_fails_where_the_step_passes_the_gap(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("l06_ladder");
+    for (int f = 0; f < 3; f++)
+        for (int m = 0; m < 2; m++) {
+            LadderScore s;
+            Image im;
+            score_ladder(FORMATS[f], MAPPINGS[m], dir, &s, &im);
+            char name[64];
+            snprintf(name, sizeof name, "ladder_%s_%s", FORMATS[f], MAPPINGS[m]);
+            expect_image(&im, GROUP, name);
+            image_free(&im);
+            for (int k = 0; k < LADDER_BANDS; k++) {
+                double d = LADDER_DISTANCE[k], wrong = ladder_wrong_fraction(&s, k);
+                if (s.front[k] + s.back[k] < 5000)
+                    fail_msg("%s: band d = %g covers only %ld pixels", name, d,
+                             s.front[k] + s.back[k]);
+                bool reversed_float = f == 2 && m == 1;
+                if ((reversed_float || paper_step(f, d * 1.06) < LADDER_GAP / 2) && wrong != 0)
+                    fail_msg("%s: band d = %g: the back plate wins %.4f of it, step %.3g m is "
+                             "under half the gap", name, d, wrong, paper_step(f, d));
+                if (!reversed_float && paper_step(f, d * 0.94) > 2 * LADDER_GAP && wrong < 0.5)
+                    fail_msg("%s: band d = %g: the back plate wins only %.4f, step %.3g m is "
+                             "over twice the gap", name, d, wrong, paper_step(f, d));
+            }
+        }
+}
+
+/* The default run: unorm24, standard, the ladder; the summary's steps and bands. */
+static void default_run_reports_steps_and_bands(void **state)
+{
+    (void)state;
+    const char *args[] = {NULL};
+    char *out = run_ok(PROGRAM, args);
+    expect_line(out, "06_depth_precision: scene ladder (12 faces)");
+    expect_line(out, "  depth step (unorm24, standard, near 0.1, far 1000): d = 1: 5.96e-07, "
+                     "d = 10: 5.96e-05, d = 100: 0.00596, d = 300: 0.0536\n");
+    expect_line(out, "  back plate wins (gap 0.05): d = 1: 0.000, d = 3: 0.000, d = 10: 0.000, "
+                     "d = 30: 0.000, d = 100: 0.000, d = 300: 0.065\n");
+    free(out);
+}
+
+/* Lesson 05's picture, face for face, at float32 (reversed) on every other
+ * built-in scene at 320 x 240: measured, not one pixel differs. Their faces
+ * are far apart for float32 z_w; a pixel could change only where two faces
+ * store the same float32 z_w and lesson 05's float 1/d tells them apart. */
+static void float32_agrees_with_lesson_05_on_the_built_in_scenes(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("l06_agree");
+    long differing_total = 0;
+    for (int i = 0; i < scene_count(); i++) {
+        const char *name = scene_at(i)->name;
+        if (strcmp(name, "ladder") == 0)
+            continue;
+        Path a = in_dir(dir, "l05.png"), b = in_dir(dir, "l06.png"), o = in_dir(dir, "x.png");
+        const char *args5[] = {"--scene", name, "--width", "320", "--height", "240", "--out",
+                               o.path, "--id-out", a.path, NULL};
+        const char *args6[] = {"--scene", name, "--width", "320", "--height", "240", "--out",
+                               o.path, "--id-out", b.path, "--depth-format", "float32",
+                               "--depth-mapping", "reversed", NULL};
+        free(run_ok("05_clipping", args5));
+        free(run_ok(PROGRAM, args6));
+        Image ia = read_png(a.path), ib = read_png(b.path);
+        long differing = 0;
+        for (size_t p = 0; p < (size_t)ia.width * (size_t)ia.height * 3; p += 3)
+            differing += memcmp(ia.rgb + p, ib.rgb + p, 3) != 0;
+        printf("  %s: %ld pixels differ from lesson 05\n", name, differing);
+        differing_total += differing;
+        image_free(&ia);
+        image_free(&ib);
+    }
+    expect_count(AGREEMENT_DIFFERING, differing_total, "pixels that differ from lesson 05");
+}
+
+static void precision_plot_is_written(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("l06_plot");
+    Path plot = in_dir(dir, "plot.png"), out = in_dir(dir, "x.png");
+    const char *args[] = {"--width", "80", "--height", "60", "--out", out.path,
+                          "--precision-plot", plot.path, NULL};
+    free(run_ok(PROGRAM, args));
+    Image im = read_png(plot.path);
+    expect_image(&im, GROUP, "precision_plot");
+    image_free(&im);
+}
+
+/* --far inf with reversed: z_w = n/d, and the ladder is as clean as at far 1000. */
+static void far_inf_with_reversed_float32(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("l06_inf");
+    Path out = in_dir(dir, "x.png");
+    const char *args[] = {"--width", "200", "--height", "150", "--out", out.path,
+                          "--depth-format", "float32", "--depth-mapping", "reversed",
+                          "--far", "inf", NULL};
+    char *text = run_ok(PROGRAM, args);
+    expect_line(text, "  depth step (float32, reversed, near 0.1, far inf): d = 1: 7.45e-08");
+    expect_line(text, "d = 100: 0.000, d = 300: 0.000\n");
+    free(text);
+}
+
+static void bad_command_lines_are_refused_with_status_2(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("l06_bad");
+    Path out = in_dir(dir, "never.png");
+    const char *fmt[] = {"--depth-format", "unorm32", "--out", out.path, NULL};
+    expect_run_refused(PROGRAM, fmt, 2,
+                       "--depth-format: 'unorm32' is not one of unorm16, unorm24, float32",
+                       out.path);
+    const char *map[] = {"--depth-mapping", "log", "--out", out.path, NULL};
+    expect_run_refused(PROGRAM, map, 2, "--depth-mapping: 'log' is not one of standard, reversed",
+                       out.path);
+    const char *inf[] = {"--far", "inf", "--out", out.path, NULL};
+    expect_run_refused(PROGRAM, inf, 2, "--far inf needs --depth-mapping reversed (the standard "
+                                        "mapping divides by far - near)", out.path);
+    const char *nan[] = {"--far", "nan", "--depth-mapping", "reversed", "--out", out.path, NULL};
+    expect_run_refused(PROGRAM, nan, 2, "--far: 'nan' is not a finite number", out.path);
+    const char *neg[] = {"--far", "-inf", "--depth-mapping", "reversed", "--out", out.path, NULL};
+    expect_run_refused(PROGRAM, neg, 2, "--far: '-inf' is not a finite number", out.path);
+    const char *same[] = {"--out", out.path, "--precision-plot", out.path, NULL};
+    char message[sizeof out.path + 64];
+    snprintf(message, sizeof message, "--out and --precision-plot both name %s", out.path);
+    expect_run_refused(PROGRAM, same, 2, message, out.path);
+    const char *none[] = {"--depth-format", NULL};
+    expect_run_error(PROGRAM, none, 2, "06_depth_precision: error: --depth-format needs a value\n");
+    /* Lesson 05 takes no reversed mapping: inf stays refused there. */
+    const char *l05[] = {"--far", "inf", "--out", out.path, NULL};
+    expect_run_refused("05_clipping", l05, 2, "--far: 'inf' is not a finite number", out.path);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(ladder_fails_where_the_step_passes_the_gap),
+        cmocka_unit_test(default_run_reports_steps_and_bands),
+        cmocka_unit_test(float32_agrees_with_lesson_05_on_the_built_in_scenes),
+        cmocka_unit_test(precision_plot_is_written),
+        cmocka_unit_test(far_inf_with_reversed_float32),
+        cmocka_unit_test(bad_command_lines_are_refused_with_status_2),
+    };
+    return cmocka_run_group_tests_name("06_depth_precision program", tests, NULL, NULL);
+}
