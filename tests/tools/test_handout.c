@@ -591,7 +591,8 @@ static const JsonValue *grade_entry(const Grade *g, const char *lesson, const ch
 /* What the handout's lesson asks the student to write, as " name() name2()":
  * each function that holds a TODO(student) (the last function header before
  * it: a line at column 0 with a "(" and no ";" at its end), and for a TODO
- * outside functions, the variable its stub defines ("const T NAME = ..."). */
+ * outside functions, the variable or macro its stub defines ("const T NAME =
+ * ...", "#define NAME ..."). */
 static void todo_functions(const char *lesson_dir, char *out, size_t size)
 {
     out[0] = '\0';
@@ -620,6 +621,15 @@ static void todo_functions(const char *lesson_dir, char *out, size_t size)
                     name--;
                 name_len = (size_t)(paren - name);
                 snprintf(current, sizeof current, "%.*s()", (int)name_len, name);
+            } else if (top_level_todo && strncmp(line, "#define ", 8) == 0) {
+                /* The stub of a region that is a macro: "#define NAME value". */
+                snprintf(current, sizeof current, "%.*s", (int)strcspn(line + 8, " ("), line + 8);
+                if (strlen(out) + strlen(current) + 2 < size) {
+                    strcat(out, " ");
+                    strcat(out, current);
+                }
+                top_level_todo = false;
+                current[0] = '\0';
             } else if (top_level_todo && isalpha((unsigned char)line[0]) && equals) {
                 /* The stub of a region outside functions: a variable, "T NAME = ...". */
                 name = equals;
