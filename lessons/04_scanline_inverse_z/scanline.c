@@ -47,26 +47,26 @@ void clear_depth(Target *t)
     }
 }
 
-/* The depth test of one fragment at pixel i, on a buffer of 1/d.
- * inline: draw_span runs it for every pixel, where a function call would cost
- * as much as the test itself. */
+/* The depth test of one fragment at pixel i, on a buffer of 1/d. inline:
+ * draw_span runs it for every pixel, where a call costs as much as the test. */
 inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 {
     float stored = t->depth[i];
-    /* SOLUTION BEGIN: the test for a buffer of 1/d (a tie keeps the first);
-     * report it with target_record, keep the winner's 1/d and face. */
+    /* SOLUTION BEGIN: does the fragment win pixel i? This buffer holds 1/d,
+     * not d: which way is nearer now? A tie keeps the fragment drawn first. */
     bool passed = inv_d > stored;
+    /* SOLUTION STUB
+    bool passed = false;
+    */
+    /* SOLUTION END */
     target_record(t, i, face, inv_d, stored, passed);
+    /* SOLUTION BEGIN: a fragment that wins leaves its 1/d and face there. */
     if (passed) {
         t->depth[i] = inv_d;
         t->face[i] = face;
     }
-    return passed;
-    /* SOLUTION STUB
-    (void)face; (void)inv_d; (void)stored;
-    return false;
-    */
     /* SOLUTION END */
+    return passed;
 }
 
 /* Sets up the edge from a to b (sub-pixel units, a above b) at row y_first:
@@ -132,7 +132,7 @@ void edge_step(Edge *e)
 
 /* Fills row y: the pixels whose centre x + 0.5 is in [left, right), on the
  * screen. 1/d starts at the first pixel centre and steps by a constant per
- * pixel; a fragment beyond the far plane (1/d < inv_far) is not tested. */
+ * pixel; a fragment beyond the far plane is discarded, not tested. */
 void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, double inv_far)
 {
     /* SOLUTION BEGIN: the span, one addition of 1/d per pixel. */

@@ -47,9 +47,8 @@ void clear_depth(Target *t)
     }
 }
 
-/* The depth test of one fragment at pixel i, on a buffer of 1/d.
- * inline: draw_span runs it for every pixel, where a function call would cost
- * as much as the test itself. */
+/* The depth test of one fragment at pixel i, on a buffer of 1/d. inline:
+ * draw_span runs it for every pixel, where a call costs as much as the test. */
 inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 {
     float stored = t->depth[i];
@@ -113,7 +112,7 @@ void edge_step(Edge *e)
 
 /* Fills row y: the pixels whose centre x + 0.5 is in [left, right), on the
  * screen. 1/d starts at the first pixel centre and steps by a constant per
- * pixel; a fragment beyond the far plane (1/d < inv_far) is not tested. */
+ * pixel; a fragment beyond the far plane is discarded, not tested. */
 void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, double inv_far)
 {
     int64_t x_first = left->x_pixel < 0 ? 0 : left->x_pixel;
