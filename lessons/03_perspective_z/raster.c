@@ -16,8 +16,8 @@
 */
 /* SOLUTION END */
 
-/* Before the first face: every pixel "infinitely far", so that the first
- * fragment to reach a pixel always passes the test; no face there yet. */
+/* Before the first face: every pixel holds a value that the first fragment
+ * to reach it always beats, whatever its depth; no face there yet. */
 void clear_depth(Target *t)
 {
     size_t n = (size_t)t->width * (size_t)t->height;
@@ -45,8 +45,8 @@ FixedPoint pixel_centre(int x, int y)
     return p;
 }
 
-/* E(a, b, p) = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x):
- * twice the signed area of triangle a, b, p. On this y-down screen it is
+/* The edge function E(a, b, p): twice the signed area of triangle a, b, p,
+ * exact in fixed point. On this y-down screen it is
  * positive when p lies to the right of a->b as one walks from a to b,
  * seen on the screen, zero on the line through a and b. */
 int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p)
@@ -56,8 +56,8 @@ int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p)
 
 /* For a triangle walked clockwise on the screen (positive area), the inside
  * is to the right of each edge. A top edge is exactly horizontal with the
- * inside below it: it runs to the right (dy = 0, dx > 0). A left edge has the
- * inside to its right: it runs up the screen (dy < 0). */
+ * inside below it; a left edge has the inside to its right. Which way each
+ * one runs on this y-down screen decides it. */
 bool is_top_left(FixedPoint a, FixedPoint b)
 {
     int64_t dx = b.x - a.x, dy = b.y - a.y;
@@ -66,7 +66,7 @@ bool is_top_left(FixedPoint a, FixedPoint b)
     return top || left;
 }
 
-/* Inside an edge: strictly, or exactly on it if it is a top or left edge. */
+/* Inside an edge by the fill rule: a centre on a shared edge goes to one. */
 bool edge_covers(int64_t e, bool top_left)
 {
     return e > 0 || (e == 0 && top_left);
