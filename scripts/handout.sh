@@ -230,14 +230,23 @@ Widen the region, or change the line outside it; nothing was written."; }
 # taken out, searched for in every file with its white space taken out too
 # (and the "*", "//", "#" and ">" that begin the lines of comments and
 # quotes). A comment that states the formula gives it away as surely as code.
+# Both sides are also read the way a paraphrase writes them: without
+# parentheses, "*" or backquotes, and with "or" and "and" for || and &&, so
+# that "x > 0 or (x == 0 and y)" reads as the expression it spells out.
 exprs="$tmp.exprs"
 # shellcheck disable=SC2086
 awk -v mode=exprs -f "$awk_regions" $sources >"$exprs" || die "cannot list the solution expressions"
 leaks=$(awk -v exprs="$exprs" -v files="$files" -v root="$tmp" '
+    function paraphrase(s) {
+        gsub(/[()*`]/, "", s)
+        gsub(/[|][|]/, "or", s)
+        gsub(/&&/, "and", s)
+        return s
+    }
     BEGIN {
         while ((getline l < exprs) > 0) {
             tab = index(l, "\t")
-            n++; where[n] = substr(l, 1, tab - 1); expr[n] = substr(l, tab + 1)
+            n++; where[n] = substr(l, 1, tab - 1); expr[n] = paraphrase(substr(l, tab + 1))
         }
         while ((getline f < files) > 0) {
             text = ""; line_no = 0; delete starts
@@ -245,6 +254,7 @@ leaks=$(awk -v exprs="$exprs" -v files="$files" -v root="$tmp" '
                 line_no++
                 sub(/^[ \t]*(\/\/|\*+|#+|>+)?/, "", l)
                 gsub(/[ \t\r]+/, "", l)
+                l = paraphrase(l)
                 starts[line_no] = length(text) + 1
                 text = text l
             }

@@ -69,8 +69,8 @@ int64_t round_half_up(int64_t p, int64_t q);
  * (x0 == x1) shows only its nearest point. */
 int segment_y_at(const Segment *s, int x);
 
-/* Step 3: the depth test. Nearer means larger y; strictly larger, so that a
- * tie keeps what was drawn first. */
+/* Step 3: the depth test. Nearer means larger y, and a tie keeps what was
+ * drawn first (docs/conventions.md). */
 static inline bool depth_test(int y, int stored)
 {
     /* SOLUTION BEGIN: the depth test: does a segment at y hide what the

@@ -9,8 +9,8 @@
  * A triangle cut at the guard band gets its new corners' d by the same rule. */
 #define DEPTH_LINEARITY LINEAR_D
 
-/* Before the first face: every pixel "infinitely far", so that the first
- * fragment to reach a pixel always passes the test; no face there yet. */
+/* Before the first face: every pixel holds a value that the first fragment
+ * to reach it always beats, whatever its depth; no face there yet. */
 void clear_depth(Target *t)
 {
     size_t n = (size_t)t->width * (size_t)t->height;
@@ -44,8 +44,8 @@ FixedPoint pixel_centre(int x, int y)
     return p;
 }
 
-/* The edge function E(a, b, p): the cross product of b - a and p - a, which
- * is twice the signed area of triangle a, b, p. On this y-down screen it is
+/* The edge function E(a, b, p): twice the signed area of triangle a, b, p,
+ * exact in fixed point. On this y-down screen it is
  * positive when p lies to the right of a->b as one walks from a to b,
  * seen on the screen, zero on the line through a and b. */
 int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p)
@@ -63,8 +63,8 @@ int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p)
 
 /* For a triangle walked clockwise on the screen (positive area), the inside
  * is to the right of each edge. A top edge is exactly horizontal with the
- * inside below it: it runs to the right (dy = 0, dx > 0). A left edge has the
- * inside to its right: it runs up the screen (dy < 0). */
+ * inside below it; a left edge has the inside to its right. Which way each
+ * one runs on this y-down screen decides it. */
 bool is_top_left(FixedPoint a, FixedPoint b)
 {
     /* SOLUTION BEGIN: the top-left rule: of a triangle walked clockwise on
@@ -81,12 +81,13 @@ bool is_top_left(FixedPoint a, FixedPoint b)
     /* SOLUTION END */
 }
 
-/* Inside an edge: strictly, or exactly on it if it is a top or left edge. */
+/* Inside an edge by the fill rule: a centre on a shared edge goes to one. */
 bool edge_covers(int64_t e, bool top_left)
 {
     /* SOLUTION BEGIN: is a pixel centre whose edge function is e inside
-     * this edge? Strictly inside, or exactly on the edge when it is a top
-     * or left edge. */
+     * this edge? e tells which side of the edge the centre is on; a centre
+     * exactly on the edge is where the top-left rule (is_top_left) has its
+     * say. */
     return e > 0 || (e == 0 && top_left);
     /* SOLUTION STUB
     (void)e; (void)top_left;
@@ -150,13 +151,13 @@ Barycentric barycentric_weights(int64_t e0, int64_t e1, int64_t e2, double inv_a
     return w;
 }
 
-/* The naive way: d blended from the corners with the weights, as if d were
- * linear on the screen. It is not: under perspective 1/d is (lesson 03). */
+/* The naive way: d taken to be linear on the screen, as if it were. It is
+ * not: under perspective 1/d is (lesson 03). */
 double interpolate_depth(Barycentric w, double d0, double d1, double d2)
 {
-    /* SOLUTION BEGIN: the view depth d at the pixel centre, from the
-     * corners' depths and the barycentric weights: this lesson takes d
-     * itself to be linear on the screen. */
+    /* SOLUTION BEGIN: the view depth d at the pixel centre. Barycentric
+     * weights reproduce exactly whatever is linear on the screen, and this
+     * lesson takes d itself to be (lesson 03 says why it is not quite). */
     return w.w0 * d0 + w.w1 * d1 + w.w2 * d2;
     /* SOLUTION STUB
     (void)w; (void)d0; (void)d1; (void)d2;

@@ -5,12 +5,19 @@
 
 #include "guard_band.h"
 
-/* What this lesson takes to be linear on the screen: 1/d, the right way.
+/* What this lesson takes to be linear on the screen (lesson 02 took d).
  * A triangle cut at the guard band gets its new corners' d by the same rule. */
+/* SOLUTION BEGIN: which quantity is linear on the screen under perspective
+ * (common/guard_band.h names both choices)? The corners a cut makes must get
+ * their depth by the rule the pixels use. */
 #define DEPTH_LINEARITY LINEAR_INV_D
+/* SOLUTION STUB
+#define DEPTH_LINEARITY LINEAR_D // lesson 02's choice, for now
+*/
+/* SOLUTION END */
 
-/* Before the first face: every pixel "infinitely far", so that the first
- * fragment to reach a pixel always passes the test; no face there yet. */
+/* Before the first face: every pixel holds a value that the first fragment
+ * to reach it always beats, whatever its depth; no face there yet. */
 void clear_depth(Target *t)
 {
     size_t n = (size_t)t->width * (size_t)t->height;
@@ -38,8 +45,8 @@ FixedPoint pixel_centre(int x, int y)
     return p;
 }
 
-/* E(a, b, p) = (b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x):
- * twice the signed area of triangle a, b, p. On this y-down screen it is
+/* The edge function E(a, b, p): twice the signed area of triangle a, b, p,
+ * exact in fixed point. On this y-down screen it is
  * positive when p lies to the right of a->b as one walks from a to b,
  * seen on the screen, zero on the line through a and b. */
 int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p)
@@ -49,8 +56,8 @@ int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p)
 
 /* For a triangle walked clockwise on the screen (positive area), the inside
  * is to the right of each edge. A top edge is exactly horizontal with the
- * inside below it: it runs to the right (dy = 0, dx > 0). A left edge has the
- * inside to its right: it runs up the screen (dy < 0). */
+ * inside below it; a left edge has the inside to its right. Which way each
+ * one runs on this y-down screen decides it. */
 bool is_top_left(FixedPoint a, FixedPoint b)
 {
     int64_t dx = b.x - a.x, dy = b.y - a.y;
@@ -59,7 +66,7 @@ bool is_top_left(FixedPoint a, FixedPoint b)
     return top || left;
 }
 
-/* Inside an edge: strictly, or exactly on it if it is a top or left edge. */
+/* Inside an edge by the fill rule: a centre on a shared edge goes to one. */
 bool edge_covers(int64_t e, bool top_left)
 {
     return e > 0 || (e == 0 && top_left);
@@ -122,21 +129,19 @@ Barycentric barycentric_weights(int64_t e0, int64_t e1, int64_t e2, double inv_a
 
 /* Under perspective 1/d, not d, is linear on the screen: divide the plane
  * equation a x + b y + c z = e of a face by d, and 1/d comes out as an affine
- * function of x / d and y / d, which are affine in the screen position. So
- * blend 1/d with the weights and take the reciprocal:
- *     1/d = w0 / d0 + w1 / d1 + w2 / d2,   d = 1 / (1/d)
+ * function of x / d and y / d, which are affine in the screen position.
  * The corners' 1/d come in worked out (draw_triangle does it once per
  * triangle), so a pixel pays one division, not four.
- * Weights 0.5, 0.3, 0.2 on depths 2, 3, 4: 1/d = 0.25 + 0.1 + 0.05 = 0.4, d = 2.5. */
+ * Weights 0.5, 0.3, 0.2 on depths 2, 3, 4 give d = 2.5 (docs/03_perspective_z.md). */
 double interpolate_depth(Barycentric w, double inv_d0, double inv_d1, double inv_d2)
 {
-    /* SOLUTION BEGIN: perspective-correct depth: under perspective 1/d, not
-     * d, is linear on the screen. Blend 1/d with the weights, then take its
-     * reciprocal. */
+    /* SOLUTION BEGIN: the depth d at the pixel centre. Barycentric weights
+     * reproduce exactly what is linear on the screen: use them on that, then
+     * turn the result back into a depth. */
     double inv_d = w.w0 * inv_d0 + w.w1 * inv_d1 + w.w2 * inv_d2;
     return 1 / inv_d;
     /* SOLUTION STUB
-    return w.w0 / inv_d0 + w.w1 / inv_d1 + w.w2 / inv_d2;
+    return w.w0 * inv_d0 + w.w1 * inv_d1 + w.w2 * inv_d2; // lesson 02's blend, for now
     */
     /* SOLUTION END */
 }
@@ -195,7 +200,13 @@ void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, in
     EdgeStepper s1 = edge_stepper(p2, p0, first); /* edge opposite corner 1 */
     EdgeStepper s2 = edge_stepper(p0, p1, first); /* edge opposite corner 2 */
     double inv_area = 1.0 / (double)area; /* for barycentric_weights: one division per triangle */
+    /* SOLUTION BEGIN: what interpolate_depth blends, at each corner, worked
+     * out once per triangle rather than once per pixel. */
     double inv_d0 = 1 / a.d, inv_d1 = 1 / b.d, inv_d2 = 1 / c.d; /* once, not per pixel */
+    /* SOLUTION STUB
+    double inv_d0 = a.d, inv_d1 = b.d, inv_d2 = c.d; // the corners' d, as lesson 02 blends it
+    */
+    /* SOLUTION END */
 
     for (int y = box.y0; y <= box.y1; y++) {
         int64_t e0 = s0.row_start, e1 = s1.row_start, e2 = s2.row_start;

@@ -7,9 +7,9 @@
  * weights of the pixel centre, and they interpolate the view depth d of the
  * corners. The depth buffer keeps, per pixel, the smallest d seen so far.
  *
- * Under perspective d is not linear on the screen, 1/d is: this lesson blends
- * the corners' 1/d with the weights and takes the reciprocal
- * (interpolate_depth), where lesson 02 blended d itself. */
+ * Under perspective d is not linear on the screen, 1/d is: this lesson
+ * interpolates depth by that rule (interpolate_depth, draw_triangle), where
+ * lesson 02 blended d itself. */
 #ifndef RASTER_H
 #define RASTER_H
 

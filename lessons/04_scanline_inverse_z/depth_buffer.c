@@ -16,20 +16,21 @@ void clear_depth(Target *t)
 inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 {
     float stored = t->depth[i];
-    /* SOLUTION BEGIN: the test for a buffer of 1/d (a tie keeps the first);
-     * report it with target_record, keep the winner's 1/d and face. */
+    /* SOLUTION BEGIN: does the fragment win pixel i? This buffer holds 1/d,
+     * not d: which way is nearer now? A tie keeps the fragment drawn first. */
     bool passed = inv_d > stored;
+    /* SOLUTION STUB
+    bool passed = false;
+    */
+    /* SOLUTION END */
     target_record(t, i, face, inv_d, stored, passed);
+    /* SOLUTION BEGIN: a fragment that wins leaves its 1/d and face there. */
     if (passed) {
         t->depth[i] = inv_d;
         t->face[i] = face;
     }
-    return passed;
-    /* SOLUTION STUB
-    (void)face; (void)inv_d; (void)stored;
-    return false;
-    */
     /* SOLUTION END */
+    return passed;
 }
 
 /* A stored 1/d back as the view depth d; 0 (nothing drawn) is infinitely far. */

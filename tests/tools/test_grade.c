@@ -384,6 +384,14 @@ static void handout_refuses_a_tree_that_gives_a_solution_line_away(void **state)
     const char *notes = path_join(tree, "tests/09_fake/notes.txt");
     write_text(notes, "the answer:\n  int sum = a + b;   /* see? */\n");
     expect_refused_handout("09", 1, "tests/09_fake/notes.txt:2 has lessons/09_fake/fake.c:7");
+    /* In prose, spread over lines and dressed up: still the solution's line. */
+    write_text(notes, "Hint: write\n`int sum =\n (a) + (b)` and you are done.\n");
+    expect_refused_handout("09", 1, "tests/09_fake/notes.txt:2 has lessons/09_fake/fake.c:7");
+    /* Words that only talk about it are fine. */
+    write_text(notes, "Hint: the sum of a and b, as an int.\n");
+    const char *dest = abs_test_dir("grade_prose_ok");
+    ShellResult r = shell_ok(tree, "sh scripts/handout.sh --only --dest %s/h 09", dest);
+    shell_result_free(&r);
     remove(notes);
 }
 

@@ -57,8 +57,11 @@ typedef struct {
 /* docs/teaching.md, "The usual mistakes": each made on purpose, with the
  * tests that must catch it and no other. A grade costs seconds, so a quick
  * set runs every time: lesson 01's (its tests take a second),
- * lesson 02's inverted test and lesson 03's linear z. TEST_ALL_MISTAKES=1
- * makes all of them, to check the page after a change to a lesson or its tests. */
+ * lesson 02's inverted test, lesson 03's linear z, and lesson 04's two
+ * one-character depth-test mistakes, whose lists hold no coverage test:
+ * coverage is read from the fragments tested, so a wrong comparison costs
+ * the depth tests only. TEST_ALL_MISTAKES=1 makes all of them, to check the
+ * page after a change to a lesson or its tests. */
 static const Mistake MISTAKES[] = {
     {"01_ybuffer", "the inverted test", "ybuffer.h",
      "return y > stored;",
@@ -103,7 +106,7 @@ static const Mistake MISTAKES[] = {
       "every_scene_matches_expected",
       "fill_back_to_front_bench_draws_what_render_faces_draws",
       "fill_front_to_back_bench_draws_what_render_faces_draws",
-      "huge_triangle_covers_the_whole_screen",
+      "huge_triangle_is_at_its_one_depth_everywhere",
       "id_out_round_trips_face_indices",
       "mesh_bench_draws_what_render_faces_draws",
       "obj_file_is_framed_and_coloured",
@@ -116,8 +119,8 @@ static const Mistake MISTAKES[] = {
       "wrong_pictures_match_expected",
       "zbuffer_resolves_the_cycle_of_triangles3", NULL}},
     {"02_zbuffer", "the wrong initial value", "raster.c",
-     "\"02_zbuffer\", INFINITY, draw_face",
-     "\"02_zbuffer\", 0.0f, draw_face",
+     "t->depth[i] = INFINITY;",
+     "t->depth[i] = 0.0f;",
      false,
      {"default_render_matches_expected",
       "depth_is_interpolated_linearly_at_chosen_pixels",
@@ -126,7 +129,7 @@ static const Mistake MISTAKES[] = {
       "every_scene_matches_expected",
       "fill_back_to_front_bench_draws_what_render_faces_draws",
       "fill_front_to_back_bench_draws_what_render_faces_draws",
-      "huge_triangle_covers_the_whole_screen",
+      "huge_triangle_is_at_its_one_depth_everywhere",
       "id_out_round_trips_face_indices",
       "mesh_bench_draws_what_render_faces_draws",
       "obj_file_is_framed_and_coloured",
@@ -186,15 +189,12 @@ static const Mistake MISTAKES[] = {
     {"04_scanline_inverse_z", "the inverted test", "depth_buffer.c",
      "bool passed = inv_d > stored;",
      "bool passed = inv_d < stored;",
-     false,
+     true,
      {"an_obj_mesh_agrees_with_lesson_03",
       "ascii_and_trace_speak_of_inverse_depth",
       "clear_to_zero_loses_to_a_far_surface",
-      "coverage_equals_the_edge_function_rule",
       "default_run_draws_the_walls_and_finds_the_front_object",
-      "depth_interp_naive_and_compare_naive",
       "depth_out_writes_view_depth_not_its_inverse",
-      "diamond_with_edges_through_pixel_centres",
       "equal_depth_keeps_the_first_face",
       "equal_depth_keeps_the_first_fragment",
       "every_built_in_scene_agrees_with_lesson_03",
@@ -202,30 +202,27 @@ static const Mistake MISTAKES[] = {
       "far_plane_discards_before_the_test",
       "fill_back_to_front_bench_draws_what_render_faces_draws",
       "fill_front_to_back_bench_draws_what_render_faces_draws",
-      "huge_triangle_covers_the_whole_screen",
+      "huge_triangle_is_at_its_one_depth_everywhere",
       "inverse_depth_is_linear_across_the_span",
       "inverse_depth_is_linear_down_the_edges",
       "larger_inverse_depth_wins",
       "mesh_bench_draws_what_render_faces_draws",
-      "naive_rule_differs_where_lesson_03s_does",
-      "naive_rule_steps_depth_itself",
-      "non_convex_face_is_drawn_as_its_triangles",
       "obj_sized_triangle_fills_the_view_or_nothing",
-      "octagon",
-      "pentagon",
       "screen_covered_many_times_costs_the_screen",
       "screen_polygon_at_depth_6_shows_only_around_the_triangle",
       "shade_depth_spreads_greys_over_the_drawn_depths",
-      "square_on_pixel_centres_keeps_top_and_left",
-      "square_with_horizontal_edges",
       "stepping_along_a_long_span_stays_accurate",
-      "tiny_triangles_cover_one_pixel_or_none",
       "trace_winner_is_the_pictures_colour_on_random_pixels",
       "triangle_at_depth_5_in_front_of_nothing",
-      "triangle_with_its_hypotenuse_on_the_left",
-      "triangle_with_its_hypotenuse_on_the_right",
-      "two_buffers_do_not_depend_on_drawing_order",
-      "unit_square_covers_one_pixel", NULL}},
+      "two_buffers_do_not_depend_on_drawing_order", NULL}},
+    {"04_scanline_inverse_z", "a tie to the later fragment", "depth_buffer.c",
+     "bool passed = inv_d > stored;",
+     "bool passed = inv_d >= stored;",
+     true,
+     {"equal_depth_keeps_the_first_face",
+      "equal_depth_keeps_the_first_fragment",
+      "every_built_in_scene_agrees_with_lesson_03",
+      "every_scene_matches_its_expected_pictures", NULL}},
     {"04_scanline_inverse_z", "the wrong initial value", "scanline.h",
      "#define CLEARED_INV_DEPTH 0.0f",
      "#define CLEARED_INV_DEPTH INFINITY",
@@ -234,11 +231,8 @@ static const Mistake MISTAKES[] = {
       "ascii_and_trace_speak_of_inverse_depth",
       "clear_to_zero_loses_to_a_far_surface",
       "clear_to_zero_means_nothing_drawn",
-      "coverage_equals_the_edge_function_rule",
       "default_run_draws_the_walls_and_finds_the_front_object",
-      "depth_interp_naive_and_compare_naive",
       "depth_out_writes_view_depth_not_its_inverse",
-      "diamond_with_edges_through_pixel_centres",
       "equal_depth_keeps_the_first_face",
       "equal_depth_keeps_the_first_fragment",
       "every_built_in_scene_agrees_with_lesson_03",
@@ -246,31 +240,20 @@ static const Mistake MISTAKES[] = {
       "far_plane_discards_before_the_test",
       "fill_back_to_front_bench_draws_what_render_faces_draws",
       "fill_front_to_back_bench_draws_what_render_faces_draws",
-      "huge_triangle_covers_the_whole_screen",
+      "huge_triangle_is_at_its_one_depth_everywhere",
       "inverse_depth_is_linear_across_the_span",
       "inverse_depth_is_linear_down_the_edges",
       "larger_inverse_depth_wins",
       "mesh_bench_draws_what_render_faces_draws",
-      "naive_rule_differs_where_lesson_03s_does",
-      "naive_rule_steps_depth_itself",
-      "non_convex_face_is_drawn_as_its_triangles",
       "nothing_at_the_centre_is_reported",
       "obj_sized_triangle_fills_the_view_or_nothing",
-      "octagon",
-      "pentagon",
       "screen_covered_many_times_costs_the_screen",
       "screen_polygon_at_depth_6_shows_only_around_the_triangle",
       "shade_depth_spreads_greys_over_the_drawn_depths",
-      "square_on_pixel_centres_keeps_top_and_left",
-      "square_with_horizontal_edges",
       "stepping_along_a_long_span_stays_accurate",
-      "tiny_triangles_cover_one_pixel_or_none",
       "trace_winner_is_the_pictures_colour_on_random_pixels",
       "triangle_at_depth_5_in_front_of_nothing",
-      "triangle_with_its_hypotenuse_on_the_left",
-      "triangle_with_its_hypotenuse_on_the_right",
-      "two_buffers_do_not_depend_on_drawing_order",
-      "unit_square_covers_one_pixel", NULL}},
+      "two_buffers_do_not_depend_on_drawing_order", NULL}},
 };
 
 /* ---- files ---- */
@@ -591,7 +574,8 @@ static const JsonValue *grade_entry(const Grade *g, const char *lesson, const ch
 /* What the handout's lesson asks the student to write, as " name() name2()":
  * each function that holds a TODO(student) (the last function header before
  * it: a line at column 0 with a "(" and no ";" at its end), and for a TODO
- * outside functions, the variable its stub defines ("const T NAME = ..."). */
+ * outside functions, the variable or macro its stub defines ("const T NAME =
+ * ...", "#define NAME ..."). */
 static void todo_functions(const char *lesson_dir, char *out, size_t size)
 {
     out[0] = '\0';
@@ -620,6 +604,15 @@ static void todo_functions(const char *lesson_dir, char *out, size_t size)
                     name--;
                 name_len = (size_t)(paren - name);
                 snprintf(current, sizeof current, "%.*s()", (int)name_len, name);
+            } else if (top_level_todo && strncmp(line, "#define ", 8) == 0) {
+                /* The stub of a region that is a macro: "#define NAME value". */
+                snprintf(current, sizeof current, "%.*s", (int)strcspn(line + 8, " ("), line + 8);
+                if (strlen(out) + strlen(current) + 2 < size) {
+                    strcat(out, " ");
+                    strcat(out, current);
+                }
+                top_level_todo = false;
+                current[0] = '\0';
             } else if (top_level_todo && isalpha((unsigned char)line[0]) && equals) {
                 /* The stub of a region outside functions: a variable, "T NAME = ...". */
                 name = equals;
@@ -669,6 +662,26 @@ static int pointed_tests(const char *lesson, char names[][256], int max)
     return n;
 }
 
+/* The sum of the points of tests/<lesson>/points.txt; *tests: its lines. */
+static double points_of(const char *lesson, int *tests)
+{
+    char path[PATH_MAX_LEN];
+    snprintf(path, sizeof path, "tests/%s/points.txt", lesson);
+    char *text = read_text(path);
+    double sum = 0;
+    *tests = 0;
+    for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n")) {
+        char name[256];
+        double points;
+        if (line[0] == '#' || sscanf(line, "%255s %lf", name, &points) != 2)
+            continue;
+        sum += points;
+        (*tests)++;
+    }
+    free(text);
+    return sum;
+}
+
 /* make test in the handout: it fails; every failed test gets a hint line
  * naming one of the functions to write; and every test with points fails
  * (a test that passes without the student's work is worth 0 points). */
@@ -715,6 +728,14 @@ static void expect_tests_fail_with_hints(const char *h, const char *lesson)
             fail_msg("%s passes on the untouched handout of %s, yet tests/%s/points.txt gives it "
                      "points: a student would get them for nothing", pointed[i], lesson, lesson);
     }
+    /* So every point comes from a test that fails with the stubs in place
+     * (the issue asked for at least half): said, with the count of tests. */
+    int listed = 0;
+    double points = points_of(lesson, &listed);
+    if (n == 0 || points <= 0)
+        fail_msg("tests/%s/points.txt gives no test any points", lesson);
+    print_message("%s: the %d tests with points (of %d in points.txt) all fail on the untouched "
+                  "handout: all %g points come from them\n", lesson, n, listed, points);
     shell_result_free(&r);
 }
 
