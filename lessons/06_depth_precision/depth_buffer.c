@@ -124,20 +124,21 @@ inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 {
     float z_w = (float)(in_use.a + in_use.b * inv_d);
     float value = encode_depth(in_use.format, z_w), stored = t->depth[i];
-    /* SOLUTION BEGIN: standard keeps the smaller value, reversed the larger;
-     * a tie keeps the first. Report it with target_record, keep the winner. */
+    /* SOLUTION BEGIN: does the fragment win pixel i? Which way is nearer
+     * depends on the mapping; a tie keeps the fragment drawn first. */
     bool passed = in_use.mapping == REVERSED ? value > stored : value < stored;
+    /* SOLUTION STUB
+    bool passed = false;
+    */
+    /* SOLUTION END */
     target_record(t, i, face, value, stored, passed);
+    /* SOLUTION BEGIN: a fragment that wins leaves its value and face there. */
     if (passed) {
         t->depth[i] = value;
         t->face[i] = face;
     }
-    return passed;
-    /* SOLUTION STUB
-    (void)face; (void)value; (void)stored;
-    return false;
-    */
     /* SOLUTION END */
+    return passed;
 }
 
 /* A stored value back as view depth d (--depth-out, --shade depth). */
