@@ -168,6 +168,34 @@ reading:
 clean:
 	rm -rf $(BUILD) out
 
+# ---- The GPU reference (docs/tools.md) --------------------------------------
+# gpu/gpu_reference draws the lessons' scenes with Mesa's llvmpipe through EGL
+# and OpenGL; make test compares the lessons with it. It is the one program
+# that needs Mesa: `make` and `make run` do not build it, and
+# scripts/ensure-deps.sh --gpu installs Mesa the first time it is built.
+#   make gpu-check   the agreement table of lessons 03, 04 and 05 with it
+GPU_REF      := $(BUILD)/tools/gpu_reference
+GPU_DEPS_OK  := $(BUILD)/.gpu-deps-ok
+GL_CFLAGS     = $(shell pkg-config --cflags egl opengl)
+GL_LIBS       = $(shell pkg-config --libs egl opengl)
+
+.PHONY: gpu gpu-check
+gpu: $(GPU_REF)
+test: $(GPU_REF)
+
+$(GPU_DEPS_OK): scripts/ensure-deps.sh | $(DEPS_OK)
+	@sh scripts/ensure-deps.sh --gpu
+	@mkdir -p $(@D) && touch $@
+
+$(BUILD)/obj/gpu/%.o: OBJ_INCLUDES += $(GL_CFLAGS)
+$(BUILD)/obj/gpu/gpu_reference.o: | $(GPU_DEPS_OK)
+$(GPU_REF): $(BUILD)/obj/gpu/gpu_reference.o $(COMMON_OBJ)
+	@mkdir -p $(@D)
+	$(LINK) $^ -o $@ $(GL_LIBS) $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
+
+gpu-check: $(GPU_REF) $(BINS)
+	@BIN_DIR=$(BUILD)/bin GPU_REF=$(GPU_REF) sh scripts/gpu-check.sh
+
 # ---- Robustness: sanitizers, fuzzing, valgrind (docs/robustness.md) ---------
 #
 #   make sanitize          everything rebuilt in build/sanitize with AddressSanitizer
