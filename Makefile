@@ -189,8 +189,8 @@ $(GPU_DEPS_OK): scripts/ensure-deps.sh | $(DEPS_OK)
 	@mkdir -p $(@D) && touch $@
 
 $(BUILD)/obj/gpu/%.o: OBJ_INCLUDES += $(GL_CFLAGS)
-$(BUILD)/obj/gpu/gpu_reference.o: | $(GPU_DEPS_OK)
-$(BUILD)/tools/gpu_reference: $(BUILD)/obj/gpu/gpu_reference.o $(COMMON_OBJ)
+$(BUILD)/obj/gpu/gpu_reference.o $(BUILD)/obj/gpu/gl.o: | $(GPU_DEPS_OK)
+$(BUILD)/tools/gpu_reference: $(BUILD)/obj/gpu/gpu_reference.o $(BUILD)/obj/gpu/gl.o $(COMMON_OBJ)
 	@mkdir -p $(@D)
 	$(LINK) $^ -o $@ $(GL_LIBS) $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 

@@ -28,8 +28,6 @@
  * context creation, shader compile and upload excluded): make bench uses it.
  * Exit status: 0 drawn, 1 no GPU context or an output not written, 2 usage. */
 #define GL_GLEXT_PROTOTYPES 1
-#include <EGL/egl.h>
-#include <EGL/eglext.h>
 #include <GL/glcorearb.h>
 
 #include <math.h>
@@ -41,6 +39,7 @@
 #include "cli.h"
 #include "error.h"
 #include "file.h"
+#include "gl.h"
 #include "image.h"
 #include "render.h"
 #include "shade.h"
@@ -48,23 +47,6 @@
 #define PROGRAM "gpu_reference"
 #define ID_MAX ((1 << 24) - 1) /* faces --id-out can number: face + 1 in 24 bits */
 
-typedef enum { DEPTH_UNORM16, DEPTH_UNORM24, DEPTH_FLOAT32 } DepthFormat;
-static const char *const FORMAT_NAMES[] = {"unorm16", "unorm24", "float32"};
-static const GLenum FORMAT_GL[] = {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24,
-                                   GL_DEPTH_COMPONENT32F};
-
-typedef enum { MAP_STANDARD, MAP_REVERSED } DepthMapping;
-static const char *const MAPPING_NAMES[] = {"standard", "reversed"};
-
-/* How the lessons' y-down rows are put on OpenGL's y-up window:
- *   flip-y       y_c negated; framebuffer row r is the lessons' row r
- *   upper-left   glClipControl(GL_UPPER_LEFT): the same rows, by the origin
- *   both         both: the picture upside down in memory, rows read back reversed
- *   rows         neither: rows read back reversed
- * All four give the same picture; they differ in which edges a tie goes to
- * (docs/tools.md: flip-y and upper-left give the lessons' top-left rule). */
-typedef enum { ORIENT_FLIP_Y, ORIENT_UPPER_LEFT, ORIENT_BOTH, ORIENT_ROWS } Orientation;
-static const char *const ORIENT_NAMES[] = {"flip-y", "upper-left", "both", "rows"};
 
 enum { FLAG_FORMAT, FLAG_MAPPING, FLAG_ORIENT, FLAG_REPEAT, FLAG_SNAP, FLAG_AGREE_ID,
        FLAG_AGREE_DEPTH, N_FLAGS };
@@ -86,9 +68,7 @@ static const LessonFlag FLAGS[N_FLAGS] = {
 };
 
 typedef struct {
-    DepthFormat format;
-    DepthMapping mapping;
-    Orientation orient;
+    GpuSetup setup;
     bool far_inf, snap;
     long repeat;
 } GpuOptions;
@@ -117,9 +97,7 @@ static bool read_gpu_options(const Options *o, GpuOptions *g, Error *err)
         return false;
     if (x[FLAG_ORIENT] && (r = pick("--orientation", x[FLAG_ORIENT], ORIENT_NAMES, 4, err)) < 0)
         return false;
-    g->format = (DepthFormat)f;
-    g->mapping = (DepthMapping)m;
-    g->orient = (Orientation)r;
+    g->setup = (GpuSetup){(DepthFormat)f, (DepthMapping)m, (Orientation)r};
     g->repeat = 1;
     g->snap = x[FLAG_SNAP] != NULL;
     if (x[FLAG_REPEAT] && !parse_int("--repeat", x[FLAG_REPEAT], 1, 10000, &g->repeat, err))
@@ -127,7 +105,7 @@ static bool read_gpu_options(const Options *o, GpuOptions *g, Error *err)
     if (x[FLAG_AGREE_DEPTH] && !x[FLAG_AGREE_ID])
         return error_set(err, "--agree-depth needs --agree-id (depths are compared where the "
                               "faces agree)");
-    if (g->far_inf && g->mapping != MAP_REVERSED)
+    if (g->far_inf && g->setup.mapping != MAP_REVERSED)
         return error_set(err, "--far inf needs --depth-mapping reversed (the standard mapping "
                               "puts the far plane at 1)");
     return true;
@@ -154,11 +132,6 @@ static int strip_far_inf(int argc, char **argv, char **kept, bool *far_inf)
 
 /* ---- The vertices: the lessons' clip space, as floats ----------------------- */
 
-typedef struct {
-    float *pos;  /* 4 per vertex */
-    int32_t *id; /* the face, 1 per vertex */
-    int n;       /* vertices, 3 per triangle */
-} Vertices;
 
 /* --snap: x_c (or y_c) moved so that the screen coordinate lands on the
  * lessons' 1/256-pixel grid, as lessons 03-05 round it (side: W or H). Only a
@@ -193,9 +166,9 @@ static bool make_vertices(const Render *r, const GpuOptions *g, Vertices *v, Err
                     p.x = snapped(p.x, p.w, r->camera.width, false);
                     p.y = snapped(p.y, p.w, r->camera.height, true);
                 }
-                if (g->mapping == MAP_REVERSED)
+                if (g->setup.mapping == MAP_REVERSED)
                     z = g->far_inf ? n : n * (f - p.w) / (f - n);
-                bool flip = g->orient == ORIENT_FLIP_Y || g->orient == ORIENT_BOTH;
+                bool flip = g->setup.orient == ORIENT_FLIP_Y || g->setup.orient == ORIENT_BOTH;
                 v->pos[4 * k + 0] = (float)p.x;
                 v->pos[4 * k + 1] = (float)(flip ? -p.y : p.y);
                 v->pos[4 * k + 2] = (float)z;
@@ -207,202 +180,12 @@ static bool make_vertices(const Render *r, const GpuOptions *g, Vertices *v, Err
     return true;
 }
 
-/* ---- EGL and OpenGL ----------------------------------------------------------- */
-
-typedef struct {
-    EGLDisplay display;
-    EGLContext context;
-    GLuint fbo, colour, depth, program, vao, buffers[2];
-} Gpu;
-
-static bool egl_fail(const char *what, Error *err)
-{
-    return error_set(err, "%s failed (EGL error 0x%x): is Mesa installed? "
-                          "(sh scripts/ensure-deps.sh --gpu)", what, (unsigned)eglGetError());
-}
-
-/* llvmpipe, whatever GPU the machine has, unless the environment says otherwise. */
-static bool gpu_open(Gpu *gpu, Error *err)
-{
-    setenv("EGL_PLATFORM", "surfaceless", 0);
-    setenv("LIBGL_ALWAYS_SOFTWARE", "1", 0);
-    setenv("GALLIUM_DRIVER", "llvmpipe", 0);
-    PFNEGLGETPLATFORMDISPLAYEXTPROC get_display =
-        (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
-    gpu->display = get_display
-                       ? get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL)
-                       : eglGetDisplay(EGL_DEFAULT_DISPLAY);
-    if (gpu->display == EGL_NO_DISPLAY)
-        return egl_fail("eglGetPlatformDisplay(surfaceless)", err);
-    if (!eglInitialize(gpu->display, NULL, NULL)) {
-        gpu->display = EGL_NO_DISPLAY;
-        return egl_fail("eglInitialize", err);
-    }
-    if (!eglBindAPI(EGL_OPENGL_API))
-        return egl_fail("eglBindAPI(OpenGL)", err);
-    const EGLint attribs[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 5,
-                              EGL_CONTEXT_OPENGL_PROFILE_MASK,
-                              EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-    gpu->context = eglCreateContext(gpu->display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attribs);
-    if (gpu->context == EGL_NO_CONTEXT)
-        return egl_fail("eglCreateContext(OpenGL 4.5 core, no config)", err);
-    if (!eglMakeCurrent(gpu->display, EGL_NO_SURFACE, EGL_NO_SURFACE, gpu->context))
-        return egl_fail("eglMakeCurrent(no surface)", err);
-    return true;
-}
-
-static void gpu_close(Gpu *gpu)
-{
-    if (gpu->context && gpu->context != EGL_NO_CONTEXT) {
-        glDeleteFramebuffers(1, &gpu->fbo);
-        glDeleteRenderbuffers(1, &gpu->colour);
-        glDeleteRenderbuffers(1, &gpu->depth);
-        glDeleteProgram(gpu->program);
-        glDeleteBuffers(2, gpu->buffers);
-        glDeleteVertexArrays(1, &gpu->vao);
-        eglMakeCurrent(gpu->display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
-        eglDestroyContext(gpu->display, gpu->context);
-    }
-    /* No eglTerminate: it unloads Mesa's driver but keeps a few of its blocks,
-     * which LeakSanitizer (make sanitize) then reports as leaks of an unknown
-     * module. The display stays reachable until exit, which frees it all. */
-    eglReleaseThread();
-}
-
-static const char *const VERTEX_SHADER =
-    "#version 330 core\n"
-    "layout(location = 0) in vec4 clip;\n"
-    "layout(location = 1) in int face;\n"
-    "flat out int v_face;\n"
-    "void main() { gl_Position = clip; v_face = face; }\n";
-
-/* face + 1 as 24-bit RGB, big-endian: k / 255 stores exactly k in RGBA8. */
-static const char *const FRAGMENT_SHADER =
-    "#version 330 core\n"
-    "flat in int v_face;\n"
-    "out vec4 colour;\n"
-    "void main() {\n"
-    "    int id = v_face + 1;\n"
-    "    colour = vec4(float((id >> 16) & 255), float((id >> 8) & 255), float(id & 255),\n"
-    "                  255.0) / 255.0;\n"
-    "}\n";
-
-static GLuint compile(GLenum kind, const char *source, Error *err)
-{
-    GLuint s = glCreateShader(kind);
-    glShaderSource(s, 1, &source, NULL);
-    glCompileShader(s);
-    GLint ok = 0;
-    glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        char log[512] = "";
-        glGetShaderInfoLog(s, sizeof log, NULL, log);
-        error_set(err, "shader compile failed: %s", log);
-        glDeleteShader(s);
-        return 0;
-    }
-    return s;
-}
-
-/* The program, the framebuffer (RGBA8 + the depth format) and the vertices. */
-static bool gpu_prepare(Gpu *gpu, const GpuOptions *g, int width, int height,
-                        const Vertices *v, Error *err)
-{
-    GLint max_side = 0;
-    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_side);
-    if (width > max_side || height > max_side)
-        return error_set(err, "%dx%d is more than this GPU's largest framebuffer, %d", width,
-                         height, (int)max_side);
-    GLuint vs = compile(GL_VERTEX_SHADER, VERTEX_SHADER, err);
-    GLuint fs = vs ? compile(GL_FRAGMENT_SHADER, FRAGMENT_SHADER, err) : 0;
-    if (!fs) {
-        glDeleteShader(vs);
-        return false;
-    }
-    gpu->program = glCreateProgram();
-    glAttachShader(gpu->program, vs);
-    glAttachShader(gpu->program, fs);
-    glLinkProgram(gpu->program);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    GLint linked = 0;
-    glGetProgramiv(gpu->program, GL_LINK_STATUS, &linked);
-    if (!linked)
-        return error_set(err, "shader link failed");
-
-    glGenRenderbuffers(1, &gpu->colour);
-    glBindRenderbuffer(GL_RENDERBUFFER, gpu->colour);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, width, height);
-    glGenRenderbuffers(1, &gpu->depth);
-    glBindRenderbuffer(GL_RENDERBUFFER, gpu->depth);
-    glRenderbufferStorage(GL_RENDERBUFFER, FORMAT_GL[g->format], width, height);
-    glGenFramebuffers(1, &gpu->fbo);
-    glBindFramebuffer(GL_FRAMEBUFFER, gpu->fbo);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, gpu->colour);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, gpu->depth);
-    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        return error_set(err, "the %dx%d framebuffer with %s depth is incomplete", width, height,
-                         FORMAT_NAMES[g->format]);
-
-    glGenVertexArrays(1, &gpu->vao);
-    glBindVertexArray(gpu->vao);
-    glGenBuffers(2, gpu->buffers);
-    glBindBuffer(GL_ARRAY_BUFFER, gpu->buffers[0]);
-    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)v->n * 4 * sizeof *v->pos), v->pos,
-                 GL_STATIC_DRAW);
-    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, 0, NULL);
-    glEnableVertexAttribArray(0);
-    glBindBuffer(GL_ARRAY_BUFFER, gpu->buffers[1]);
-    glBufferData(GL_ARRAY_BUFFER, (GLsizeiptr)((size_t)v->n * sizeof *v->id), v->id,
-                 GL_STATIC_DRAW);
-    glVertexAttribIPointer(1, 1, GL_INT, 0, NULL);
-    glEnableVertexAttribArray(1);
-
-    bool upper = g->orient == ORIENT_UPPER_LEFT || g->orient == ORIENT_BOTH;
-    bool reversed = g->mapping == MAP_REVERSED;
-    glClipControl(upper ? GL_UPPER_LEFT : GL_LOWER_LEFT,
-                  reversed ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
-    glViewport(0, 0, width, height);
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_DITHER);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(reversed ? GL_GREATER : GL_LESS);
-    glClearDepth(reversed ? 0.0 : 1.0);
-    glClearColor(0, 0, 0, 0);
-    glUseProgram(gpu->program);
-    if (glGetError() != GL_NO_ERROR)
-        return error_set(err, "OpenGL refused the set-up (error 0x%x)", (unsigned)glGetError());
-    return true;
-}
-
-static double now_seconds(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
-}
-
-/* Clear and draw, g->repeat times; returns the seconds of the fastest draw. */
-static double gpu_draw(const GpuOptions *g, int nverts)
-{
-    double best = INFINITY;
-    for (long i = 0; i < g->repeat; i++) {
-        double t0 = now_seconds();
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        glDrawArrays(GL_TRIANGLES, 0, nverts);
-        glFinish();
-        double t = now_seconds() - t0;
-        best = t < best ? t : best;
-    }
-    return best;
-}
-
 /* ---- Reading back: faces and view depth, the lessons' way ------------------ */
 
 /* z_w back to the view depth d. */
 static double window_to_view_depth(double z, const GpuOptions *g, double n, double f)
 {
-    if (g->mapping == MAP_REVERSED)
+    if (g->setup.mapping == MAP_REVERSED)
         return g->far_inf ? n / z : f / (1 + z * (f - n) / n); /* z = n/(f-n) (f/d - 1) */
     return n / (1 - z * (f - n) / f);                          /* z = f/(f-n) (1 - n/d) */
 }
@@ -422,7 +205,7 @@ static bool gpu_read(const GpuOptions *g, int width, int height, double near, do
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
     glReadPixels(0, 0, width, height, GL_DEPTH_COMPONENT, GL_FLOAT, z);
-    bool reversed_rows = g->orient == ORIENT_BOTH || g->orient == ORIENT_ROWS;
+    bool reversed_rows = g->setup.orient == ORIENT_BOTH || g->setup.orient == ORIENT_ROWS;
     for (int y = 0; y < height; y++) {
         size_t from = (size_t)(reversed_rows ? height - 1 - y : y) * (size_t)width;
         for (int x = 0; x < width; x++) {
@@ -570,15 +353,17 @@ static int draw_and_write(const Options *o, const GpuOptions *g, Render *r, Erro
     else if (r->mesh.nfaces > ID_MAX)
         error_set(err, "%d faces: --id-out numbers at most %d", r->mesh.nfaces, ID_MAX);
     else if (make_vertices(r, g, &v, err) && gpu_open(&gpu, err) &&
-             gpu_prepare(&gpu, g, o->width, o->height, &v, err)) {
-        double seconds = gpu_draw(g, v.n);
+             gpu_prepare(&gpu, &g->setup, o->width, o->height, &v, err)) {
+        double seconds = INFINITY; /* the fastest of g->repeat draws */
+        for (long i = 0; i < g->repeat; i++)
+            seconds = fmin(seconds, gpu_draw(v.n));
         output_set_begin();
         if (gpu_read(g, o->width, o->height, r->camera.near, r->camera.far, face, depth, err) &&
             write_outputs(r, o, face, depth, err) && output_set_publish(err)) {
             status = EXIT_OK;
             printf(PROGRAM ": %s (%d faces): %d triangles drawn by %s, depth %s %s%s\n",
                    r->source, r->mesh.nfaces, v.n / 3, (const char *)glGetString(GL_RENDERER),
-                   FORMAT_NAMES[g->format], MAPPING_NAMES[g->mapping],
+                   FORMAT_NAMES[g->setup.format], MAPPING_NAMES[g->setup.mapping],
                    g->far_inf ? " (far at infinity)" : "");
             if (g->repeat > 1)
                 printf("  draw: %.6f s (fastest of %ld, glFinish included)\n", seconds,
