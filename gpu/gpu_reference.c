@@ -6,6 +6,7 @@
  *                 [--height N] [--id-out FILE.png] [--depth-out FILE.pfm]
  *                 [--out FILE.png] [--depth-format unorm16|unorm24|float32]
  *                 [--depth-mapping standard|reversed] [--far inf] [--repeat N]
+ *                 [--orientation HOW] [--snap] [--agree-id F.png [--agree-depth F.pfm]]
  *
  * The geometry is the lessons' own: common/render.c loads the scene and puts
  * every corner in clip space in double, P V (x, y, z, 1) with gluPerspective's
@@ -21,11 +22,15 @@
  * Either way a tie keeps the fragment drawn first, as in the lessons.
  *
  * Rows: the lessons' screen has y down with row 0 at the top. OpenGL's window
- * has y up. Negating y_c puts the lessons' row r in the framebuffer's row r;
- * the orientation flag shows the other ways (see ORIENTATIONS below).
+ * has y up. Negating y_c puts the lessons' row r in the framebuffer's row r,
+ * and then llvmpipe's fill rule is the lessons' top-left; --orientation shows
+ * the other ways (gl.h).
  *
- * --repeat N draws N times and prints the time of one draw (glFinish included,
- * context creation, shader compile and upload excluded): make bench uses it.
+ * --agree-id and --agree-depth compare a lesson's --id-out and --depth-out
+ * with the GPU's pictures and print the agreement; --snap first moves each
+ * corner onto the lessons' 1/256-pixel grid (docs/tools.md says why).
+ * --repeat N draws N times and prints the time of the fastest draw (clear,
+ * draw, glFinish; not the context, the shader compile or the upload).
  * Exit status: 0 drawn, 1 no GPU context or an output not written, 2 usage. */
 #define GL_GLEXT_PROTOTYPES 1
 #include <GL/glcorearb.h>
