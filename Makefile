@@ -168,6 +168,35 @@ reading:
 clean:
 	rm -rf $(BUILD) out
 
+# ---- The GPU reference (docs/tools.md) --------------------------------------
+# gpu/gpu_reference draws the lessons' scenes with Mesa's llvmpipe through EGL
+# and OpenGL; make test compares the lessons with it. It is the one program
+# that needs Mesa: `make` and `make run` do not build it, and
+# scripts/ensure-deps.sh --gpu installs Mesa the first time it is built.
+#   make gpu-check   the agreement table of lessons 03, 04 and 05 with it
+# (A handout leaves gpu/ and the tests that use it out: no Mesa for students.)
+GPU_REF      := $(if $(wildcard gpu/gpu_reference.c),$(BUILD)/tools/gpu_reference)
+GPU_DEPS_OK  := $(BUILD)/.gpu-deps-ok
+GL_CFLAGS     = $(shell pkg-config --cflags egl opengl)
+GL_LIBS       = $(shell pkg-config --libs egl opengl)
+
+.PHONY: gpu gpu-check
+gpu: $(GPU_REF)
+test: $(GPU_REF)
+
+$(GPU_DEPS_OK): scripts/ensure-deps.sh | $(DEPS_OK)
+	@sh scripts/ensure-deps.sh --gpu
+	@mkdir -p $(@D) && touch $@
+
+$(BUILD)/obj/gpu/%.o: OBJ_INCLUDES += $(GL_CFLAGS)
+$(BUILD)/obj/gpu/gpu_reference.o $(BUILD)/obj/gpu/gl.o: | $(GPU_DEPS_OK)
+$(BUILD)/tools/gpu_reference: $(BUILD)/obj/gpu/gpu_reference.o $(BUILD)/obj/gpu/gl.o $(COMMON_OBJ)
+	@mkdir -p $(@D)
+	$(LINK) $^ -o $@ $(GL_LIBS) $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
+
+gpu-check: $(GPU_REF) $(BINS)
+	@BIN_DIR=$(BUILD)/bin GPU_REF=$(GPU_REF) sh scripts/gpu-check.sh
+
 # ---- Robustness: sanitizers, fuzzing, valgrind (docs/robustness.md) ---------
 #
 #   make sanitize          everything rebuilt in build/sanitize with AddressSanitizer
@@ -302,20 +331,31 @@ bench_lesson_objs = $(patsubst %.c,$(BENCH_DIR)/obj/%.o,$(filter-out %/main.c,$(
 BENCH_SUPPORT := $(patsubst %.c,$(BENCH_DIR)/obj/%.o,$(wildcard common/*.c) \
                    tests/bench/workloads.c tests/bench/measure.c)
 BENCH_BINS    := $(BENCH_DIR)/bench_limit $(BENCH_LESSONS:%=$(BENCH_DIR)/bench_%)
+# Mesa's llvmpipe on the same workloads, one thread and all cores
+# (gpu/bench_llvmpipe.c), wherever the GPU reference is built.
+BENCH_BINS    += $(if $(GPU_REF),$(BENCH_DIR)/bench_llvmpipe)
 
 .PHONY: bench
 bench: $(BENCH_BINS)
 	@CC="$(CC)" BENCH_CFLAGS="$(BENCH_CFLAGS)" sh tests/bench/run-bench.sh $(BENCH_DIR) $(BENCH_BINS)
 
+# (A lesson's extras/ include its taught header as "raster.h", as in the usual build.)
+$(BENCH_DIR)/obj/lessons/%.o: OBJ_INCLUDES += -I$(word 1,$(subst /, ,$*))/$(word 2,$(subst /, ,$*))
 $(BENCH_DIR)/obj/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(@D)
-	$(CC) $(REQUIRED_CPPFLAGS) -Itests/bench $(CPPFLAGS) $(CFLAGS) $(BENCH_OPT) $(call warn_of,$<) \
+	$(CC) $(REQUIRED_CPPFLAGS) -Itests/bench $(OBJ_INCLUDES) $(CPPFLAGS) $(CFLAGS) $(BENCH_OPT) $(call warn_of,$<) \
 	    $(STB_CFLAGS) -MMD -MP -c $< -o $@
 
 $(BENCH_DIR)/obj/bench_%.o: tests/bench/bench.c | $(DEPS_OK)
 	@mkdir -p $(@D)
 	$(CC) $(REQUIRED_CPPFLAGS) -Itests/bench $(CPPFLAGS) $(BENCH_CFLAGS) \
-	    -DBENCH_RASTERIZER=$(call bench_rasterizer,$*) -MMD -MP -c $< -o $@
+	    -DBENCH_RASTERIZER=$(call bench_rasterizer,$*) -DBENCH_LESSON='"$*"' -MMD -MP -c $< -o $@
+
+$(BENCH_DIR)/obj/gpu/%.o: OBJ_INCLUDES += $(GL_CFLAGS)
+$(BENCH_DIR)/obj/gpu/bench_llvmpipe.o $(BENCH_DIR)/obj/gpu/gl.o: | $(GPU_DEPS_OK)
+$(BENCH_DIR)/bench_llvmpipe: $(BENCH_DIR)/obj/gpu/bench_llvmpipe.o $(BENCH_DIR)/obj/gpu/gl.o \
+                             $(BENCH_SUPPORT)
+	$(CC) $(BENCH_CFLAGS) $(LDFLAGS) $^ -o $@ $(GL_LIBS) $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 
 $(BENCH_DIR)/bench_limit: $(BENCH_DIR)/obj/tests/bench/limit.o $(BENCH_SUPPORT)
 	$(CC) $(BENCH_CFLAGS) $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)

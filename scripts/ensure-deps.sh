@@ -9,10 +9,19 @@
 # compile_commands.json asks for bear): it is installed too, with the Debian
 # package PACKAGE (the program's own name if none is given), when it is not
 # on the PATH.
+#
+# --gpu adds what the GPU reference (gpu/gpu_reference.c, make test) needs:
+# the EGL and OpenGL headers and libraries (pkg-config egl and opengl, and
+# GL/glcorearb.h), and Mesa itself, whose EGL and llvmpipe driver it runs on.
 set -eu
 
 missing=""
+gpu=false
 for need in "$@"; do
+    if [ "$need" = --gpu ]; then
+        gpu=true
+        continue
+    fi
     program=${need%%:*}
     package=${need#*:}
     command -v "$program" >/dev/null 2>&1 || missing="$missing $package"
@@ -23,6 +32,23 @@ if command -v pkg-config >/dev/null 2>&1; then
     pkg-config --exists cmocka || missing="$missing libcmocka-dev"
 else
     missing="$missing libstb-dev libcmocka-dev"
+fi
+# Mesa's EGL (its glvnd vendor file) and its software driver (swrast_dri.so
+# holds llvmpipe) are found by file: they have no pkg-config file.
+if $gpu; then
+    if command -v pkg-config >/dev/null 2>&1; then
+        pkg-config --exists egl    || missing="$missing libegl-dev"
+        pkg-config --exists opengl || missing="$missing libopengl-dev"
+    else
+        missing="$missing libegl-dev libopengl-dev"
+    fi
+    [ -f /usr/include/GL/glcorearb.h ] || missing="$missing libgl-dev"
+    ls /usr/share/glvnd/egl_vendor.d/*mesa*.json >/dev/null 2>&1 || missing="$missing libegl-mesa0"
+    swrast=false
+    for f in /usr/lib/*/dri/swrast_dri.so /usr/lib/dri/swrast_dri.so; do
+        [ -f "$f" ] && swrast=true
+    done
+    $swrast || missing="$missing libgl1-mesa-dri"
 fi
 [ -z "$missing" ] && exit 0
 

@@ -19,6 +19,9 @@
 #ifndef BENCH_RASTERIZER
 #error "compile with -DBENCH_RASTERIZER=<the lesson's Rasterizer>"
 #endif
+#ifndef BENCH_LESSON
+#error "compile with -DBENCH_LESSON='\"<the lesson's directory>\"'"
+#endif
 extern const Rasterizer BENCH_RASTERIZER;
 
 #define MAX_REPS 100
@@ -57,8 +60,8 @@ static bool measure_workload(const Rasterizer *rz, const Workload *w, int reps,
     target_free(&t);
     if (!same)
         return error_set(err, "%s: repetitions of '%s' left different depth buffers",
-                         rz->program, w->name);
-    m->lesson = rz->program;
+                         BENCH_LESSON, w->name);
+    m->lesson = BENCH_LESSON;
     m->workload = w->name;
     m->width = w->width;
     m->height = w->height;

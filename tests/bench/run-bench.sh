@@ -6,6 +6,9 @@
 # lines with the columns of tests/bench/measure.h; here they get the derived
 # figures: million triangles and million fragments per second, nanoseconds
 # per fragment, and the ratio of fragments per second to the limit's.
+# When Mesa's llvmpipe is among them (rows llvmpipe_1t, timed in CPU time of
+# the process, and llvmpipe_Nt, all cores, by the wall clock), a second table
+# gives each lesson's speed as a multiple of llvmpipe's on the same workload.
 # CC and BENCH_CFLAGS, when set, are shown with the machine.
 set -eu
 if [ $# -lt 3 ]; then
@@ -39,7 +42,8 @@ BEGIN {
 }
 NR == 1 {
     # BENCH_WARMUP and BENCH_REPS of tests/bench/measure.h
-    printf("each row: 1 untimed warm-up, then %d timed repetitions of the drawing (CPU time);\n", $5)
+    printf("each row: 1 untimed warm-up, then %d timed repetitions of the drawing (CPU time;\n", $5)
+    printf("llvmpipe: clear, draw and glFinish, CPU time for 1 thread, wall clock for N);\n")
     printf("median time; spread = (slowest - fastest) / median\n\n")
     printf("%-22s %-19s %9s %10s %9s %7s %8s %8s %8s %8s\n", "lesson", "workload", "triangles",
            "fragments", "median ms", "spread", "Mtri/s", "Mfrag/s", "ns/frag", "x limit")
@@ -67,15 +71,40 @@ NR == 1 {
     row_workload[rows] = workload
     row_tri_rate[rows] = tris / med / 1e6
     row_ratio[rows] = ratio
+    row_med[rows] = med
+    if (lesson == "llvmpipe_1t")
+        gpu1[workload] = med
+    else if (lesson ~ /^llvmpipe_[0-9]+t$/) {
+        gpuN[workload] = med
+        gpuN_name = lesson
+    }
 }
 # The targets docs/performance.md states: on fill_back_to_front 0.40 of the
 # limit for lesson 04, 0.20 for the others; on small 3 million triangles/s.
 END {
+    # Mesa llvmpipe in the same run (gpu/bench_llvmpipe.c): the speed of each
+    # lesson as a multiple of that of llvmpipe on the same workload (the
+    # median time of llvmpipe over that of the lesson), one thread, all cores.
+    if (length(gpu1) > 0) {
+        print ""
+        printf("speed relative to llvmpipe (time of llvmpipe / time of the lesson; above 1: the lesson is faster):\n")
+        printf("%-22s %-19s %10s %10s\n", "lesson", "workload", "x 1 thread", "x " (gpuN_name != "" ? gpuN_name : "all cores"))
+        for (r = 1; r <= rows; r++) {
+            l = row_lesson[r]
+            w = row_workload[r]
+            if (l == "limit" || l ~ /^llvmpipe_/ || !(w in gpu1))
+                continue
+            printf("%-22s %-19s %10.2f %10s\n", l, w, gpu1[w] / row_med[r],
+                   (w in gpuN) ? sprintf("%.2f", gpuN[w] / row_med[r]) : "-")
+        }
+    }
     print ""
     print "targets (single-threaded):"
     for (r = 1; r <= rows; r++) {
         l = row_lesson[r]
         w = row_workload[r]
+        if (l ~ /^llvmpipe_/)
+            continue
         if (w == "fill_back_to_front" && l != "limit")
             check(l " fill_back_to_front, fraction of the limit", row_ratio[r],
                   (l ~ /^04/) ? 0.40 : 0.20)
