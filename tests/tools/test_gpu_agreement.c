@@ -258,6 +258,11 @@ static void lessons_agree_with_the_gpu(void **state)
     for (int s = 0; s < scene_count(); s++) {
         const char *scene = scene_at(s)->name;
         bool flat = scene_is_flat(scene);
+        if (scene_at(s)->coplanar) { /* decals: rounding picks the winner of each tie */
+            print_message("%-22s %-15s faces lie on faces: lesson 07's bias decides, not "
+                          "compared here\n", "every lesson", scene);
+            continue;
+        }
         for (int l = 0; l < N_LESSONS; l++) {
             const char *lesson = LESSONS[l];
             Agreement a, snapped;
