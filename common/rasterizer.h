@@ -32,9 +32,7 @@ typedef struct {
 typedef struct {
     void (*clear)(Target *t); /* every pixel: "nothing drawn yet", face NO_FACE */
     void (*draw_face)(Target *t, const ScreenFace *f, const DrawContext *ctx);
-    /* A stored value back as view depth d (--depth-out, --shade depth); NULL
-     * when the buffer already holds d. */
-    double (*stored_to_depth)(float stored);
+    double (*stored_to_depth)(const Target *t, float stored); /* as d; NULL: it holds d */
     bool clips; /* clips itself (05): render_faces drops only faces wholly behind near */
 } Rasterizer;
 

@@ -215,7 +215,7 @@ float *render_view_depth(const Target *t, const Rasterizer *rz)
         if (t->face[i] == NO_FACE)
             d[i] = INFINITY; /* docs/conventions.md: the background is +infinity */
         else
-            d[i] = rz->stored_to_depth ? (float)rz->stored_to_depth(t->depth[i]) : t->depth[i];
+            d[i] = rz->stored_to_depth ? (float)rz->stored_to_depth(t, t->depth[i]) : t->depth[i];
     }
     return d;
 }

@@ -20,6 +20,7 @@
 typedef struct {
     int width, height;
     float *depth;
+    struct DepthSetup *depth_setup; /* its format, from lesson 06 on (NULL before) */
     int32_t *face;
     uint32_t *overdraw;
     FragmentStats stats;
@@ -37,15 +38,12 @@ void target_trace_pixel(Target *t, int x, int y);
 /* Called by a lesson's depth test for every fragment it tests at pixel i:
  * counted, and logged when i is the traced pixel (--trace). Not static: a
  * lesson's inline depth_test calls it (target.c has its external definition). */
-inline void target_record(Target *t, size_t i, int face, float value, float stored,
-                                 bool passed)
+inline void target_record(Target *t, size_t i, int face, float value, float stored, bool passed)
 {
     t->overdraw[i]++;
     t->stats.tested++;
-    if (passed)
-        t->stats.passed++;
-    else
-        t->stats.failed++;
+    t->stats.passed += passed;
+    t->stats.failed += !passed;
     if ((long)i == t->trace.pixel)
         trace_log_append(&t->trace, face, value, stored, passed);
 }

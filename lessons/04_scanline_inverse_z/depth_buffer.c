@@ -34,12 +34,16 @@ inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 }
 
 /* A stored 1/d back as the view depth d; 0 (nothing drawn) is infinitely far. */
-static double stored_to_depth(float stored) { return stored > 0 ? 1.0 / stored : INFINITY; }
+static double stored_to_depth(const Target *t, float stored)
+{
+    (void)t; /* 1/d needs nothing else */
+    return stored > 0 ? 1.0 / stored : INFINITY;
+}
 
 /* Front object detection: the view depth of the nearest surface at (x, y). */
 double nearest_distance_at(const Target *t, int x, int y)
 {
-    return stored_to_depth(t->depth[(size_t)y * (size_t)t->width + (size_t)x]);
+    return stored_to_depth(t, t->depth[(size_t)y * (size_t)t->width + (size_t)x]);
 }
 
 const Rasterizer SCANLINE_ZBUFFER = {

@@ -119,8 +119,9 @@ void draw_clipped_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
 }
 
 /* A stored 1/d back as the view depth d; 0 (nothing drawn) is infinitely far. */
-static double stored_to_depth(float stored)
+static double stored_to_depth(const Target *t, float stored)
 {
+    (void)t;
     return stored > 0 ? 1.0 / stored : INFINITY;
 }
 

@@ -10,10 +10,6 @@
 #define UNORM16_MAX 65535.0    /* 2^16 - 1: the code of z_w = 1 */
 #define UNORM24_MAX 16777215.0 /* 2^24 - 1 */
 
-/* The one buffer of a run keeps its setup here: clear_depth and depth_test
- * are handed only the target and a fragment (scanline.h), as in lesson 04. */
-static DepthSetup in_use = {UNORM24, STANDARD, 0.1, 1000, 1000 / 999.9, -100 / 999.9};
-
 /* Both mappings as z_w = a + b/d, from the formulas of depth_format.h. */
 DepthSetup depth_setup(DepthFormat format, DepthMapping mapping, double near, double far)
 {
@@ -90,26 +86,17 @@ double depth_step(const DepthSetup *s, double d)
     return depth_quantum(s->format, window_depth(s, d)) * d * d / fabs(s->b);
 }
 
-void depth_use(const DepthSetup *s)
-{
-    in_use = *s;
-}
-
-const DepthSetup *depth_in_use(void)
-{
-    return &in_use;
-}
-
 /* The far plane everywhere, nothing drawn: 1 (standard) or 0 (reversed). */
-static float cleared(void)
+static float cleared(const DepthSetup *s)
 {
-    return encode_depth(in_use.format, in_use.mapping == REVERSED ? 0.0f : 1.0f);
+    return encode_depth(s->format, s->mapping == REVERSED ? 0.0f : 1.0f);
 }
 
+/* The target's buffer in the format and mapping of t->depth_setup. */
 void clear_depth(Target *t)
 {
     size_t n = (size_t)t->width * (size_t)t->height;
-    float value = cleared();
+    float value = cleared(t->depth_setup);
     for (size_t i = 0; i < n; i++) {
         t->depth[i] = value;
         t->face[i] = NO_FACE;
@@ -122,11 +109,12 @@ void clear_depth(Target *t)
  * the depth test a float; then it is stored in the buffer's format. */
 inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 {
-    float z_w = (float)(in_use.a + in_use.b * inv_d);
-    float value = encode_depth(in_use.format, z_w), stored = t->depth[i];
+    const DepthSetup *s = t->depth_setup;
+    float z_w = (float)(s->a + s->b * inv_d);
+    float value = encode_depth(s->format, z_w), stored = t->depth[i];
     /* SOLUTION BEGIN: does the fragment win pixel i? Which way is nearer
      * depends on the mapping; a tie keeps the fragment drawn first. */
-    bool passed = in_use.mapping == REVERSED ? value > stored : value < stored;
+    bool passed = s->mapping == REVERSED ? value > stored : value < stored;
     /* SOLUTION STUB
     bool passed = false;
     */
@@ -142,9 +130,10 @@ inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 }
 
 /* A stored value back as view depth d (--depth-out, --shade depth). */
-static double stored_to_depth(float stored)
+static double stored_to_depth(const Target *t, float stored)
 {
-    return stored == cleared() ? INFINITY : view_depth(&in_use, decode_depth(in_use.format, stored));
+    const DepthSetup *s = t->depth_setup;
+    return stored == cleared(s) ? INFINITY : view_depth(s, decode_depth(s->format, stored));
 }
 
 const Rasterizer DEPTH_PRECISION_ZBUFFER = {

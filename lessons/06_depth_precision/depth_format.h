@@ -11,7 +11,8 @@
  *   a fragment     wins when its value < stored (standard), > stored
  *                  (reversed); a tie keeps the first one drawn
  * Both mappings are z_w = a + b/d, affine in 1/d: lesson 04's scanline
- * steps 1/d, and depth_test maps each fragment's 1/d to z_w. */
+ * steps 1/d, and depth_test maps each fragment's 1/d to z_w. The target
+ * carries its buffer's setup (Target.depth_setup), set before clear_depth. */
 #ifndef DEPTH_FORMAT_H
 #define DEPTH_FORMAT_H
 
@@ -22,7 +23,7 @@
 typedef enum { UNORM16, UNORM24, FLOAT32 } DepthFormat;
 typedef enum { STANDARD, REVERSED } DepthMapping;
 
-typedef struct {
+typedef struct DepthSetup {
     DepthFormat format;
     DepthMapping mapping;
     double near, far; /* far may be INFINITY with REVERSED */
@@ -37,8 +38,6 @@ float encode_depth(DepthFormat format, float z_w);   /* what the buffer stores *
 double decode_depth(DepthFormat format, float stored);
 double depth_quantum(DepthFormat format, double z_w); /* one step of z_w there */
 double depth_step(const DepthSetup *s, double d);     /* ... and of d, in world units */
-void depth_use(const DepthSetup *s); /* the buffer's setup from now on: before clear_depth */
-const DepthSetup *depth_in_use(void);
 
 /* clear_depth, then every face clipped (clip.c) and drawn by lesson 04's
  * scanline into the buffer of z_w. */

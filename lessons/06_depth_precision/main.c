@@ -16,8 +16,7 @@
 static void print_depth_steps(const Target *t)
 {
     static const double AT[] = {1, 10, 100, 300};
-    const DepthSetup *s = depth_in_use();
-    (void)t;
+    const DepthSetup *s = t->depth_setup;
     printf("  depth step (%s, %s, near %g, far %g):", format_name(s->format),
            mapping_name(s->mapping), s->near, s->far);
     for (size_t k = 0; k < sizeof AT / sizeof AT[0]; k++)
@@ -44,7 +43,7 @@ int main(int argc, char **argv)
     if (status != RUN_GO)
         return status;
     DepthSetup depth = depth_chosen(&run);             /* --depth-format, --depth-mapping */
-    depth_use(&depth);
+    run.target.depth_setup = &depth;                   /* the buffer's format and mapping */
     run.rz->clear(&run.target);                        /* clear: to the far plane, 1 or 0 */
     if (run_draw(&run) &&                              /* draw: clip, divide, draw_face */
         run_write(&run))                               /* write: the pictures asked for */

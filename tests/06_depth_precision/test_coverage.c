@@ -4,12 +4,14 @@
  * reversed, far at 1000: the suite's faces lie between d = 0.1 and 1000. */
 #include "depth_format.h"
 
+static DepthSetup suite_depth;
+
 #define SUITE_RASTERIZER DEPTH_PRECISION_ZBUFFER
+#define SUITE_DEPTH_SETUP (&suite_depth)
 #include "../shared/coverage_suite.inc"
 
 int main(void)
 {
-    DepthSetup s = depth_setup(FLOAT32, REVERSED, SUITE_NEAR, SUITE_FAR);
-    depth_use(&s);
+    suite_depth = depth_setup(FLOAT32, REVERSED, SUITE_NEAR, SUITE_FAR);
     return run_coverage_suite("06_depth_precision");
 }

@@ -146,8 +146,8 @@ static void standard_clears_to_one_and_keeps_the_smaller(void **state)
 {
     (void)state;
     DepthSetup s = depth_setup(UNORM24, STANDARD, NEAR, FAR);
-    depth_use(&s);
     Target t = one_pixel();
+    t.depth_setup = &s;
     clear_depth(&t);
     assert_true(t.depth[0] == 16777215.0f);
     assert_true(depth_test(&t, 0, 0, inv(500)));  /* anything before far wins */
@@ -163,8 +163,8 @@ static void reversed_clears_to_zero_and_keeps_the_larger(void **state)
 {
     (void)state;
     DepthSetup s = depth_setup(FLOAT32, REVERSED, NEAR, INFINITY);
-    depth_use(&s);
     Target t = one_pixel();
+    t.depth_setup = &s;
     clear_depth(&t);
     assert_true(t.depth[0] == 0.0f);
     assert_true(depth_test(&t, 0, 0, inv(1e6))); /* far = inf: a million away still wins */
@@ -180,8 +180,8 @@ static void a_tie_keeps_the_first_fragment(void **state)
 {
     (void)state;
     DepthSetup s = depth_setup(UNORM16, STANDARD, NEAR, FAR);
-    depth_use(&s);
     Target t = one_pixel();
+    t.depth_setup = &s;
     clear_depth(&t);
     /* At d = 100 one unorm16 code spans about 1.5 m: 100 and 100.05 tie. */
     assert_true(depth_test(&t, 0, 7, inv(100.05)));
@@ -189,8 +189,8 @@ static void a_tie_keeps_the_first_fragment(void **state)
     expect_count(7, t.face[0], "the first face drawn");
     target_free(&t);
     s = depth_setup(FLOAT32, REVERSED, NEAR, FAR); /* there they are told apart */
-    depth_use(&s);
     t = one_pixel();
+    t.depth_setup = &s;
     clear_depth(&t);
     assert_true(depth_test(&t, 0, 7, inv(100.05)));
     assert_true(depth_test(&t, 0, 8, inv(100)));

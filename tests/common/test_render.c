@@ -206,8 +206,9 @@ static void record_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
     }
 }
 
-static double inverse(float stored)
+static double inverse(const Target *t, float stored)
 {
+    (void)t;
     return 1.0 / stored;
 }
 

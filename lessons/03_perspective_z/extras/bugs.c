@@ -23,8 +23,9 @@ static void draw_face_negated_w(Target *t, const ScreenFace *f, const DrawContex
     }
 }
 
-static double negated_to_depth(float stored)
+static double negated_to_depth(const Target *t, float stored)
 {
+    (void)t;
     return -(double)stored;
 }
 

@@ -29,8 +29,9 @@ static void draw_face_no_clip(Target *t, const ScreenFace *f, const DrawContext 
     free(v);
 }
 
-static double stored_to_depth(float stored)
+static double stored_to_depth(const Target *t, float stored)
 {
+    (void)t;
     return stored > 0 ? 1.0 / stored : INFINITY;
 }
 

@@ -79,7 +79,7 @@ static bool after_write(Run *run, Error *err)
         note_ladder_bands(run);
     if (!plot)
         return true;
-    const DepthSetup *s = depth_in_use();
+    const DepthSetup *s = run->target.depth_setup;
     if (!precision_plot(plot, s->near, s->far, err))
         return false;
     run_note(run, "  wrote %s", plot);
