@@ -45,7 +45,7 @@ struct Run {
     const DepthRule *rule; /* likewise */
     bool (*draw)(Run *run, Error *err);        /* an extra's way to draw, or NULL */
     bool (*after_write)(Run *run, Error *err); /* an extra's output, or NULL */
-    char note[512];                            /* extras' lines under the summary */
+    char note[2048];                           /* extras' lines under the summary */
     char default_out[64];                      /* "out/<program>.png" */
     const char *extra_out[RUN_EXTRA_OUTPUTS], *extra_out_flag[RUN_EXTRA_OUTPUTS]; int n_extra_out;
     Error err;

@@ -1,0 +1,118 @@
+/* depth_bias.c: lesson 07, depth bias (polygon offset), step by step
+ * (depth_format.h, docs/07_depth_bias.md).
+ *
+ * A decal lies exactly on its base: at every pixel both have the same z_w,
+ * but each face steps it from its own corners and the format rounds each
+ * on its own, so from pixel to pixel either one comes out nearer. The fix
+ * GPUs give: move every fragment of the decal by o toward the camera before
+ * the test, more than those roundings can undo. */
+#include "depth_format.h"
+
+#include <math.h>
+
+#include "clip.h"
+
+/* m: the face's steepest slope of z_w on the screen. z_w = a + b/d, and 1/d
+ * is affine on the screen for a flat face, so z_w is too: a plane
+ *     z_w = z_0 + g_x (x - x_0) + g_y (y - y_0)
+ * with the same slopes everywhere on the face. They are solved from the fan
+ * triangle (v[0], v[k], v[k+1]) of largest area, the one rounding spoils
+ * least. m = max(|g_x|, |g_y|): the approximation OpenGL and Vulkan allow
+ * for the exact sqrt(g_x^2 + g_y^2), and what GPUs do. */
+double depth_slope(const DepthSetup *s, const ScreenVertex *v, int n)
+{
+    double gx = 0, gy = 0, largest = 0;
+    double z0 = window_depth(s, v[0].d);
+    for (int k = 1; k + 1 < n; k++) {
+        double x1 = v[k].x - v[0].x, y1 = v[k].y - v[0].y;
+        double x2 = v[k + 1].x - v[0].x, y2 = v[k + 1].y - v[0].y;
+        double z1 = window_depth(s, v[k].d) - z0, z2 = window_depth(s, v[k + 1].d) - z0;
+        double area = x1 * y2 - x2 * y1; /* twice the triangle's signed area */
+        if (!(fabs(area) > largest))
+            continue;
+        largest = fabs(area);
+        /* SOLUTION BEGIN: g_x and g_y from z1 = g_x x1 + g_y y1 and
+         * z2 = g_x x2 + g_y y2 (two equations, two unknowns). */
+        gx = (z1 * y2 - z2 * y1) / area;
+        gy = (x1 * z2 - x2 * z1) / area;
+        /* SOLUTION STUB
+        (void)z1; (void)z2;
+        */
+        /* SOLUTION END */
+    }
+    /* SOLUTION BEGIN: m from the two slopes. */
+    return fmax(fabs(gx), fabs(gy));
+    /* SOLUTION STUB
+    return 0.0;
+    */
+    /* SOLUTION END */
+}
+
+/* r: the smallest difference of z_w the format resolves on this face. For
+ * unorm n bits one code, 1/(2^n - 1), the same everywhere. For float32 one
+ * step of the float at the face's largest |z_w|: 2^(e - 23) with e its
+ * exponent (|z_w| = 1.f x 2^e), as OpenGL, Vulkan and Direct3D define it,
+ * which is lesson 06's depth_quantum there. */
+double resolvable_difference(const DepthSetup *s, const ScreenVertex *v, int n)
+{
+    /* SOLUTION BEGIN: the largest |z_w| of the corners, and one step there. */
+    double largest = 0;
+    for (int k = 0; k < n; k++)
+        largest = fmax(largest, fabs(window_depth(s, v[k].d)));
+    return depth_quantum(s->format, largest);
+    /* SOLUTION STUB
+    (void)s; (void)v; (void)n;
+    return 0.0;
+    */
+    /* SOLUTION END */
+}
+
+/* o = m FACTOR + r UNITS. A clamp other than 0 limits it as Direct3D's
+ * DepthBiasClamp and Vulkan's depthBiasClamp do: to at most the clamp when
+ * it is positive, to at least the clamp when it is negative. */
+double polygon_offset(const DepthBias *bias, double m, double r)
+{
+    /* SOLUTION BEGIN: the two terms, then the clamp. */
+    double o = m * bias->factor + r * bias->units;
+    if (bias->clamp > 0)
+        o = fmin(o, bias->clamp);
+    else if (bias->clamp < 0)
+        o = fmax(o, bias->clamp);
+    return o;
+    /* SOLUTION STUB
+    (void)bias; (void)m; (void)r;
+    return 0.0;
+    */
+    /* SOLUTION END */
+}
+
+/* The face as the GPU sets it up: clipped at near and far (clip.c) and
+ * divided onto the screen. v holds CLIP_MAX_OUT(CLIP_MAX_IN) corners. */
+static int face_on_screen(const Target *t, const ScreenFace *f, ScreenVertex *v)
+{
+    if (!f->clip || f->n > CLIP_MAX_IN) { /* made on the screen, or too many corners */
+        int n = f->n < CLIP_MAX_IN ? f->n : CLIP_MAX_IN;
+        for (int k = 0; k < n; k++)
+            v[k] = f->v[k];
+        return n;
+    }
+    Vec4 kept[CLIP_MAX_OUT(CLIP_MAX_IN)];
+    int n = clip_polygon(f->clip, f->n, kept);
+    for (int k = 0; k < n; k++)
+        v[k] = clip_to_screen(kept[k], t->width, t->height);
+    return n;
+}
+
+/* One face: a decal is drawn with its o, every other face with o = 0,
+ * exactly as lesson 06 draws it. */
+void draw_biased_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+{
+    DepthSetup *s = t->depth_setup;
+    ScreenVertex v[CLIP_MAX_OUT(CLIP_MAX_IN)];
+    int n;
+    if (s->bias.mesh && mesh_face_in(s->bias.mesh, f->face, "decal") &&
+        (n = face_on_screen(t, f, v)) >= 3)
+        s->offset = polygon_offset(&s->bias, depth_slope(s, v, n), resolvable_difference(s, v, n));
+    draw_clipped_face(t, f, ctx);
+    s->offset = 0;
+}

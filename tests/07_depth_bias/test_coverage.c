@@ -1,0 +1,18 @@
+/* test_coverage.c: lesson 07 covers pixels by the series' fill rule, like
+ * lessons 02 to 06 (tests/shared/coverage_suite.inc): the bias moves what a
+ * decal stores, not which pixels a face covers. Run with lesson 06's float32
+ * buffer, reversed, far at 1000, and no face offset (the suite's faces are in
+ * no group). */
+#include "depth_format.h"
+
+static DepthSetup suite_depth;
+
+#define SUITE_RASTERIZER DEPTH_BIAS_ZBUFFER
+#define SUITE_DEPTH_SETUP (&suite_depth)
+#include "../shared/coverage_suite.inc"
+
+int main(void)
+{
+    suite_depth = depth_setup(FLOAT32, REVERSED, SUITE_NEAR, SUITE_FAR);
+    return run_coverage_suite("07_depth_bias");
+}
