@@ -12,6 +12,9 @@
  *                           GREATER (the caller puts z_c = n (f - w_c) / (f - n))
  *                 a tie keeps the fragment drawn first, as in the lessons
  *   gpu_draw      clear, draw every triangle, glFinish: the seconds it took
+ *   gpu_draw_offset  the same, with glPolygonOffset(factor, units) (and
+ *                 glPolygonOffsetClamp when clamp is not 0) enabled
+ *                 (GL_POLYGON_OFFSET_FILL) on the triangles marked biased
  *   gpu_close
  * The fragment shader writes face + 1 as 24-bit RGB: --id-out's colours. */
 #ifndef GPU_GL_H
@@ -61,6 +64,14 @@ bool gpu_open(Gpu *gpu, Error *err);
 bool gpu_prepare(Gpu *gpu, const GpuSetup *s, int width, int height, const Vertices *v,
                  Error *err);
 double gpu_draw(int nverts);
+/* The polygon offset of lesson 07: what it applies to, and how much. */
+typedef struct {
+    const bool *biased; /* per triangle: offset it (in drawing order) */
+    double factor, units, clamp;
+} GpuOffset;
+/* False with err set when a clamp is asked for and the GL has no
+ * glPolygonOffsetClamp (GL 4.6, ARB_ or EXT_polygon_offset_clamp). */
+bool gpu_draw_offset(int nverts, const GpuOffset *o, double *seconds, Error *err);
 void gpu_close(Gpu *gpu);
 
 /* Seconds of the wall clock: llvmpipe draws in threads of its own. */

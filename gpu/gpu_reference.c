@@ -7,6 +7,7 @@
  *                 [--out FILE.png] [--depth-format unorm16|unorm24|float32]
  *                 [--depth-mapping standard|reversed] [--far inf] [--repeat N]
  *                 [--orientation HOW] [--snap] [--agree-id F.png [--agree-depth F.pfm]]
+ *                 [--polygon-offset FACTOR,UNITS [--offset-clamp C]]
  *
  * The geometry is the lessons' own: common/render.c loads the scene and puts
  * every corner in clip space in double, P V (x, y, z, 1) with gluPerspective's
@@ -29,6 +30,9 @@
  * --agree-id and --agree-depth compare a lesson's --id-out and --depth-out
  * with the GPU's pictures and print the agreement; --snap first moves each
  * corner onto the lessons' 1/256-pixel grid (docs/tools.md says why).
+ * --polygon-offset and --offset-clamp: lesson 07's depth bias, on the faces in
+ * group or object `decal`: glPolygonOffset (glPolygonOffsetClamp) with
+ * GL_POLYGON_OFFSET_FILL enabled while they are drawn, in mesh order.
  * --repeat N draws N times and prints the time of the fastest draw (clear,
  * draw, glFinish; not the context, the shader compile or the upload).
  * Exit status: 0 drawn, 1 no GPU context or an output not written, 2 usage. */
@@ -54,7 +58,7 @@
 
 
 enum { FLAG_FORMAT, FLAG_MAPPING, FLAG_ORIENT, FLAG_REPEAT, FLAG_SNAP, FLAG_AGREE_ID,
-       FLAG_AGREE_DEPTH, N_FLAGS };
+       FLAG_AGREE_DEPTH, FLAG_OFFSET, FLAG_CLAMP, N_FLAGS };
 static const LessonFlag FLAGS[N_FLAGS] = {
     [FLAG_FORMAT] = {"--depth-format", "FMT", "unorm16, unorm24 (default) or float32"},
     [FLAG_MAPPING] = {"--depth-mapping", "MAP",
@@ -70,12 +74,17 @@ static const LessonFlag FLAGS[N_FLAGS] = {
     [FLAG_AGREE_DEPTH] = {"--agree-depth", "FILE.pfm",
                           "a lesson's --depth-out: the largest relative depth difference where "
                           "both show the same face (with --agree-id)"},
+    [FLAG_OFFSET] = {"--polygon-offset", "FACTOR,UNITS",
+                     "glPolygonOffset(FACTOR, UNITS) on the faces in group or object `decal`"},
+    [FLAG_CLAMP] = {"--offset-clamp", "C",
+                    "with --polygon-offset: glPolygonOffsetClamp(FACTOR, UNITS, C)"},
 };
 
 typedef struct {
     GpuSetup setup;
-    bool far_inf, snap;
+    bool far_inf, snap, offset;
     long repeat;
+    double factor, units, clamp; /* --polygon-offset, --offset-clamp */
 } GpuOptions;
 
 /* One of names[0 .. n-1], by name: its index, or -1 with err set. */
@@ -106,6 +115,22 @@ static bool read_gpu_options(const Options *o, GpuOptions *g, Error *err)
     g->repeat = 1;
     g->snap = x[FLAG_SNAP] != NULL;
     if (x[FLAG_REPEAT] && !parse_int("--repeat", x[FLAG_REPEAT], 1, 10000, &g->repeat, err))
+        return false;
+    g->offset = x[FLAG_OFFSET] != NULL;
+    if (g->offset) {
+        Vec3 two; /* FACTOR,UNITS read as X,Y,Z with Z = 0 appended */
+        char buf[256];
+        snprintf(buf, sizeof buf, "%s,0", x[FLAG_OFFSET]);
+        if (strlen(x[FLAG_OFFSET]) > 200 || !strchr(x[FLAG_OFFSET], ',') ||
+            !parse_vec3("--polygon-offset", buf, &two, err))
+            return error_set(err, "--polygon-offset: '%.40s' is not two finite numbers "
+                                  "FACTOR,UNITS", x[FLAG_OFFSET]);
+        g->factor = two.x;
+        g->units = two.y;
+    }
+    if (x[FLAG_CLAMP] && !g->offset)
+        return error_set(err, "--offset-clamp needs --polygon-offset");
+    if (x[FLAG_CLAMP] && !parse_double("--offset-clamp", x[FLAG_CLAMP], &g->clamp, err))
         return false;
     if (x[FLAG_AGREE_DEPTH] && !x[FLAG_AGREE_ID])
         return error_set(err, "--agree-depth needs --agree-id (depths are compared where the "
@@ -345,6 +370,22 @@ static void print_agreement(const Agreement *a, bool with_depth)
 
 /* ---- The run --------------------------------------------------------------------- */
 
+/* Every triangle of a face in `decal` offset, the others not (lesson 07). */
+static bool draw_with_offset(const Render *r, const GpuOptions *g, const Vertices *v,
+                             double *seconds, Error *err)
+{
+    int ntris = v->n / 3;
+    bool *biased = malloc((size_t)(ntris > 0 ? ntris : 1) * sizeof *biased);
+    if (!biased)
+        return error_set(err, "out of memory for %d triangles", ntris);
+    for (int t = 0; t < ntris; t++)
+        biased[t] = mesh_face_in(&r->mesh, v->id[3 * t], "decal");
+    GpuOffset o = {biased, g->factor, g->units, g->clamp};
+    bool ok = gpu_draw_offset(v->n, &o, seconds, err);
+    free(biased);
+    return ok;
+}
+
 static int draw_and_write(const Options *o, const GpuOptions *g, Render *r, Error *err)
 {
     Vertices v = {0};
@@ -360,10 +401,17 @@ static int draw_and_write(const Options *o, const GpuOptions *g, Render *r, Erro
     else if (make_vertices(r, g, &v, err) && gpu_open(&gpu, err) &&
              gpu_prepare(&gpu, &g->setup, o->width, o->height, &v, err)) {
         double seconds = INFINITY; /* the fastest of g->repeat draws */
-        for (long i = 0; i < g->repeat; i++)
-            seconds = fmin(seconds, gpu_draw(v.n));
+        bool drawn = true;
+        for (long i = 0; i < g->repeat && drawn; i++) {
+            double s = INFINITY;
+            if (g->offset)
+                drawn = draw_with_offset(r, g, &v, &s, err);
+            else
+                s = gpu_draw(v.n);
+            seconds = fmin(seconds, s);
+        }
         output_set_begin();
-        if (gpu_read(g, o->width, o->height, r->camera.near, r->camera.far, face, depth, err) &&
+        if (drawn && gpu_read(g, o->width, o->height, r->camera.near, r->camera.far, face, depth, err) &&
             write_outputs(r, o, face, depth, err) && output_set_publish(err)) {
             status = EXIT_OK;
             printf(PROGRAM ": %s (%d faces): %d triangles drawn by %s, depth %s %s%s\n",

@@ -21,7 +21,7 @@
  * for the exact sqrt(g_x^2 + g_y^2), and what GPUs do. */
 double depth_slope(const DepthSetup *s, const ScreenVertex *v, int n)
 {
-    double gx = 0, gy = 0, largest = 0;
+    double m = 0, largest = 0;
     double z0 = window_depth(s, v[0].d);
     for (int k = 1; k + 1 < n; k++) {
         double x1 = v[k].x - v[0].x, y1 = v[k].y - v[0].y;
@@ -32,20 +32,16 @@ double depth_slope(const DepthSetup *s, const ScreenVertex *v, int n)
             continue;
         largest = fabs(area);
         /* SOLUTION BEGIN: g_x and g_y from z1 = g_x x1 + g_y y1 and
-         * z2 = g_x x2 + g_y y2 (two equations, two unknowns). */
-        gx = (z1 * y2 - z2 * y1) / area;
-        gy = (x1 * z2 - x2 * z1) / area;
+         * z2 = g_x x2 + g_y y2 (two equations, two unknowns), then m. */
+        double gx = (z1 * y2 - z2 * y1) / area;
+        double gy = (x1 * z2 - x2 * z1) / area;
+        m = fmax(fabs(gx), fabs(gy));
         /* SOLUTION STUB
         (void)z1; (void)z2;
         */
         /* SOLUTION END */
     }
-    /* SOLUTION BEGIN: m from the two slopes. */
-    return fmax(fabs(gx), fabs(gy));
-    /* SOLUTION STUB
-    return 0.0;
-    */
-    /* SOLUTION END */
+    return m;
 }
 
 /* r: the smallest difference of z_w the format resolves on this face. For
