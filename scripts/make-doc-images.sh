@@ -122,6 +122,16 @@ l06="$build/bin/06_depth_precision"
        --out "$images/06_ladder_float32_reversed.png" >/dev/null
 echo "make-doc-images: 06_depth_precision done"
 
+# ---- 07_depth_bias: the decals scene with no bias, units only, the
+# recommended bias and far too much (the pictures of its tests, at 400 x 300).
+make -s BUILD="$build" "$build/bin/07_depth_bias"
+l07="$build/bin/07_depth_bias"
+for pair in no_bias:0,0 units_only:0,-2 recommended:-1,-1 too_much:-1000,-1000; do
+    "$l07" --width 400 --height 300 --polygon-offset "${pair#*:}" \
+           --out "$images/07_${pair%%:*}.png" >/dev/null
+done
+echo "make-doc-images: 07_depth_bias done"
+
 # ---- Diagrams drawn by code (tools/diagrams.c): lesson 02's edge functions
 # and top-left rule, lesson 03's d and 1/d along a row, lesson 04's edge walk
 make -s BUILD="$build" "$build/tools/diagrams"

@@ -1,24 +1,17 @@
 /* depth_bias.c: lesson 07, depth bias (polygon offset), step by step
- * (depth_format.h, docs/07_depth_bias.md).
- *
- * A decal lies exactly on its base: at every pixel both have the same z_w,
- * but each face steps it from its own corners and the format rounds each
- * on its own, so from pixel to pixel either one comes out nearer. The fix
- * GPUs give: move every fragment of the decal by o toward the camera before
- * the test, more than those roundings can undo. */
+ * (depth_format.h, docs/07_depth_bias.md). A decal and its base have the same
+ * z_w, each stepped from its own corners and rounded on its own: either can
+ * come out nearer. So every fragment of the decal moves by o toward the camera. */
 #include "depth_format.h"
 
 #include <math.h>
 
 #include "clip.h"
 
-/* m: the face's steepest slope of z_w on the screen. z_w = a + b/d, and 1/d
- * is affine on the screen for a flat face, so z_w is too: a plane
- *     z_w = z_0 + g_x (x - x_0) + g_y (y - y_0)
- * with the same slopes everywhere on the face. They are solved from the fan
- * triangle (v[0], v[k], v[k+1]) of largest area, the one rounding spoils
- * least. m = max(|g_x|, |g_y|): the approximation OpenGL and Vulkan allow
- * for the exact sqrt(g_x^2 + g_y^2), and what GPUs do. */
+/* m: the steepest slope of z_w on the screen. 1/d is affine on the screen for
+ * a flat face, so z_w = a + b/d is a plane z_w = z_0 + g_x (x - x_0) + g_y (y - y_0),
+ * solved from the fan triangle of largest area. m = max(|g_x|, |g_y|), as
+ * OpenGL and Vulkan allow in place of sqrt(g_x^2 + g_y^2), and GPUs do. */
 double depth_slope(const DepthSetup *s, const ScreenVertex *v, int n)
 {
     double m = 0, largest = 0;
@@ -44,11 +37,9 @@ double depth_slope(const DepthSetup *s, const ScreenVertex *v, int n)
     return m;
 }
 
-/* r: the smallest difference of z_w the format resolves on this face. For
- * unorm n bits one code, 1/(2^n - 1), the same everywhere. For float32 one
- * step of the float at the face's largest |z_w|: 2^(e - 23) with e its
- * exponent (|z_w| = 1.f x 2^e), as OpenGL, Vulkan and Direct3D define it,
- * which is lesson 06's depth_quantum there. */
+/* r: the smallest difference of z_w the format resolves on this face: unorm n
+ * bits, one code, 1/(2^n - 1); float32, 2^(e - 23) with e the exponent of the
+ * face's largest |z_w| = 1.f x 2^e (OpenGL, Vulkan, Direct3D): depth_quantum. */
 double resolvable_difference(const DepthSetup *s, const ScreenVertex *v, int n)
 {
     /* SOLUTION BEGIN: the largest |z_w| of the corners, and one step there. */
@@ -70,11 +61,7 @@ double polygon_offset(const DepthBias *bias, double m, double r)
 {
     /* SOLUTION BEGIN: the two terms, then the clamp. */
     double o = m * bias->factor + r * bias->units;
-    if (bias->clamp > 0)
-        o = fmin(o, bias->clamp);
-    else if (bias->clamp < 0)
-        o = fmax(o, bias->clamp);
-    return o;
+    return bias->clamp > 0 ? fmin(o, bias->clamp) : bias->clamp < 0 ? fmax(o, bias->clamp) : o;
     /* SOLUTION STUB
     (void)bias; (void)m; (void)r;
     return 0.0;
@@ -82,18 +69,12 @@ double polygon_offset(const DepthBias *bias, double m, double r)
     /* SOLUTION END */
 }
 
-/* The face as the GPU sets it up: clipped at near and far (clip.c) and
- * divided onto the screen. v holds CLIP_MAX_OUT(CLIP_MAX_IN) corners. */
+/* The face as the GPU sets it up: clipped at near and far (clip.c) and divided
+ * onto the screen (none for a face made on the screen or of over CLIP_MAX_IN corners). */
 static int face_on_screen(const Target *t, const ScreenFace *f, ScreenVertex *v)
 {
-    if (!f->clip || f->n > CLIP_MAX_IN) { /* made on the screen, or too many corners */
-        int n = f->n < CLIP_MAX_IN ? f->n : CLIP_MAX_IN;
-        for (int k = 0; k < n; k++)
-            v[k] = f->v[k];
-        return n;
-    }
     Vec4 kept[CLIP_MAX_OUT(CLIP_MAX_IN)];
-    int n = clip_polygon(f->clip, f->n, kept);
+    int n = f->clip && f->n <= CLIP_MAX_IN ? clip_polygon(f->clip, f->n, kept) : 0;
     for (int k = 0; k < n; k++)
         v[k] = clip_to_screen(kept[k], t->width, t->height);
     return n;

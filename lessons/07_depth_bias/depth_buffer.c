@@ -1,10 +1,10 @@
 /* depth_buffer.c: lesson 06's depth buffer of window depth z_w, in a format
- * and a mapping, step by step (depth_format.h, docs/06_depth_precision.md);
- * lesson 07 adds the face's depth bias o to z_w in depth_test. */
+ * and a mapping, step by step (depth_format.h, docs/06_depth_precision.md). */
 #include "depth_format.h"
 
 #include <math.h>
 
+#include "clip.h"
 #include "scanline.h"
 
 #define UNORM16_MAX 65535.0    /* 2^16 - 1: the code of z_w = 1 */
@@ -106,9 +106,8 @@ void clear_depth(Target *t)
 /* The depth test of one fragment at pixel i. The scanline hands it the
  * fragment's 1/d (stepped in double, rounded to float); z_w = a + b/d is
  * computed in double and rounded to float32, as a GPU's interpolator hands
- * the depth test a float; then it is stored in the buffer's format. The
- * face's bias o is added to z_w first, before the format rounds it, as the
- * OpenGL specification says: o = 0 leaves lesson 06's value as it was. */
+ * the depth test a float; then it is stored in the buffer's format. Lesson 07:
+ * the face's bias o is added first, before the format rounds z_w, as in OpenGL. */
 inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 {
     const DepthSetup *s = t->depth_setup;
@@ -143,7 +142,7 @@ static double stored_to_depth(const Target *t, float stored)
     return stored == cleared(s) ? INFINITY : view_depth(s, decode_depth(s->format, stored));
 }
 
-const Rasterizer DEPTH_BIAS_ZBUFFER = {
+const Rasterizer DEPTH_PRECISION_ZBUFFER = {
     .clear = clear_depth, .draw_face = draw_biased_face, .stored_to_depth = stored_to_depth,
     .clips = true,
 };

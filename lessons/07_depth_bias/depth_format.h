@@ -1,6 +1,5 @@
-/* depth_format.h: lesson 06's depth buffer as a GPU keeps it
- * (docs/06_depth_precision.md), and lesson 07's depth bias
- * (docs/07_depth_bias.md).
+/* depth_format.h: lesson 06, the depth buffer as a GPU keeps it
+ * (docs/06_depth_precision.md).
  *
  *   stored value   window depth z_w in [0, 1], in a format:
  *                    unorm16, unorm24  the integer code round(z_w (2^bits - 1))
@@ -14,20 +13,13 @@
  * Both mappings are z_w = a + b/d, affine in 1/d: lesson 04's scanline
  * steps 1/d, and depth_test maps each fragment's 1/d to z_w. The target
  * carries its buffer's setup (Target.depth_setup), set before clear_depth.
- *
- *   depth bias     the faces of group or object `decal` get, on every
- *                  fragment's z_w before the test, o = m FACTOR + r UNITS:
- *                  m = max(|dz_w/dx|, |dz_w/dy|), the face's steepest depth
- *                  slope on the screen; r = the format's smallest step there
- *                  (1/(2^bits - 1), or 2^(e - 23) for float32 with e the
- *                  exponent of the face's largest z_w); o clamped to CLAMP
- *                  (Direct3D, Vulkan) unless CLAMP is 0 */
+ * Lesson 07 (docs/07_depth_bias.md): a face in `decal` adds o = m FACTOR +
+ * r UNITS to z_w, m its steepest slope on the screen, r one step of the format. */
 #ifndef DEPTH_FORMAT_H
 #define DEPTH_FORMAT_H
 
 #include <stddef.h>
 
-#include "mesh.h"
 #include "rasterizer.h"
 
 typedef enum { UNORM16, UNORM24, FLOAT32 } DepthFormat;
@@ -55,15 +47,14 @@ float encode_depth(DepthFormat format, float z_w);   /* what the buffer stores *
 double decode_depth(DepthFormat format, float stored);
 double depth_quantum(DepthFormat format, double z_w); /* one step of z_w there */
 double depth_step(const DepthSetup *s, double d);     /* ... and of d, in world units */
-/* Lesson 07's steps, in the order depth_bias.c takes them: m and r of a face
- * (its n corners on the screen), its o, and each face drawn with its o. */
+/* Lesson 07's steps (depth_bias.c): m, r and o of a face, and the face drawn. */
 double depth_slope(const DepthSetup *s, const ScreenVertex *v, int n);
 double resolvable_difference(const DepthSetup *s, const ScreenVertex *v, int n);
 double polygon_offset(const DepthBias *bias, double m, double r);
 void draw_biased_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
 
 /* clear_depth, then every face clipped (clip.c) and drawn by lesson 04's
- * scanline into the buffer of z_w, a decal's offset by o. */
-extern const Rasterizer DEPTH_BIAS_ZBUFFER;
+ * scanline into the buffer of z_w. */
+extern const Rasterizer DEPTH_PRECISION_ZBUFFER;
 
 #endif

@@ -1,40 +1,39 @@
 /* main.c: lesson 07, z-fighting and depth bias (docs/07_depth_bias.md).
  *
  * The outline of the program. What this lesson teaches is in depth_bias.c:
- * each face of group or object `decal` gets a depth offset o = m FACTOR +
- * r UNITS (--polygon-offset), its steepest depth slope and the format's
- * smallest step, and depth_test (depth_buffer.c) adds o to the fragment's
- * z_w before the test. The buffer is lesson 06's, unorm24 and standard by
- * default, like an OpenGL window's; faces are clipped (clip.c) and drawn
- * (scanline.c) as before. What the lesson shows but does not teach (the
- * flags' words, each decal's share of its pixels) is in extras/. */
+ * a face in group `decal` gets o = m FACTOR + r UNITS added to its z_w, in
+ * lesson 06's buffer (depth_buffer.c, unorm24 by default). Faces are clipped
+ * as in lesson 05 (clip.c) and drawn by lesson 04's scanline (scanline.c),
+ * both unchanged. What the lesson shows but does not teach (the flags' words,
+ * each decal's share of its pixels) is in extras/. */
 #include <stdio.h>
 
 #include "depth_format.h"
 #include "extras/extras.h"
 #include "lesson.h"
 
-/* The bias in use, and what one unit is worth in this format at the far plane. */
-static void print_bias(const Target *t)
+/* How far apart two surfaces must be to be told apart, at a few distances. */
+static void print_depth_steps(const Target *t)
 {
+    static const double AT[] = {1, 10, 100, 300};
     const DepthSetup *s = t->depth_setup;
-    printf("  polygon offset on the faces in `decal`: factor %g, units %g", s->bias.factor,
-           s->bias.units);
-    if (s->bias.clamp != 0)
-        printf(", clamp %g", s->bias.clamp);
-    printf(" (%s, %s; one unit of r = %.3g at z_w = 1)\n", format_name(s->format),
-           mapping_name(s->mapping), depth_quantum(s->format, 1.0));
+    printf("  depth step (%s, %s, near %g, far %g):", format_name(s->format),
+           mapping_name(s->mapping), s->near, s->far);
+    for (size_t k = 0; k < sizeof AT / sizeof AT[0]; k++)
+        if (AT[k] > s->near && AT[k] <= s->far)
+            printf("%s d = %g: %.3g", k ? "," : "", AT[k], depth_step(s, AT[k]));
+    printf("\n");
 }
 
 static const Lesson LESSON = {
     .program = "07_depth_bias",
-    .purpose = "Lesson 07: z-fighting between coplanar faces, and the depth bias "
-               "(polygon offset) that ends it: o = m * factor + r * units on the decals.",
+    .purpose = "Lesson 07: z-fighting between coplanar faces, and the depth bias (polygon "
+               "offset) on the faces in `decal` that ends it.",
     .scene = "decals",
-    .rasterizer = &DEPTH_BIAS_ZBUFFER,
+    .rasterizer = &DEPTH_PRECISION_ZBUFFER, /* with lesson 07's draw_biased_face */
     .depth_rule = {"depth buffer", "z_w", "face", SMALLER_IS_NEARER}, /* reversed: extras */
     .extras = &EXTRAS,
-    .report = print_bias,
+    .report = print_depth_steps,
 };
 
 int main(int argc, char **argv)
@@ -43,11 +42,11 @@ int main(int argc, char **argv)
     int status = run_load(&run, &LESSON, argc, argv); /* load: the command line, the scene */
     if (status != RUN_GO)
         return status;
-    DepthSetup depth = depth_chosen(&run);             /* the format, mapping and bias */
+    DepthSetup depth = depth_chosen(&run);             /* --depth-format, --depth-mapping */
     run.target.depth_setup = &depth;                   /* the buffer's format and mapping */
     run.rz->clear(&run.target);                        /* clear: to the far plane, 1 or 0 */
-    if (run_draw(&run) &&                              /* draw: clip, offset, draw_face */
+    if (run_draw(&run) &&                              /* draw: clip, divide, draw_face */
         run_write(&run))                               /* write: the pictures asked for */
-        run_report(&run);                              /* report: the summary, the decals */
+        run_report(&run);                              /* report: the summary, the steps */
     return run_end(&run);
 }

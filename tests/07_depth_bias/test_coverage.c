@@ -7,7 +7,7 @@
 
 static DepthSetup suite_depth;
 
-#define SUITE_RASTERIZER DEPTH_BIAS_ZBUFFER
+#define SUITE_RASTERIZER DEPTH_PRECISION_ZBUFFER
 #define SUITE_DEPTH_SETUP (&suite_depth)
 #include "../shared/coverage_suite.inc"
 

@@ -192,6 +192,9 @@ static bool after_write(Run *run, Error *err)
     Target ref;
     if (!draw_without_bases(run, &ref, err))
         return false;
+    const DepthBias *b = &run->target.depth_setup->bias;
+    run_note(run, "  polygon offset on the faces in `decal`: factor %g, units %g, clamp %g",
+             b->factor, b->units, b->clamp);
     run_note(run, "  each decal's share of its pixels (face: share; its pixels: where it "
                   "shows without its base):");
     note_decals(run, &ref);

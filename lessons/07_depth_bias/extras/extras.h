@@ -1,9 +1,6 @@
 /* extras.h: what lesson 07 shows but does not teach (docs/07_depth_bias.md):
- *
- *   --depth-format F, --depth-mapping M   lesson 06's words, read into a DepthSetup
- *   --polygon-offset FACTOR,UNITS         and --offset-clamp C: read into its bias
- *   every decal's share of its pixels     after the picture: each face in `decal`,
- *                                         the pixels it wins of those it should win */
+ *   --depth-format, --depth-mapping, --polygon-offset, --offset-clamp: their
+ *   words; and after the picture, each decal's share of its pixels. */
 #ifndef EXTRAS_H
 #define EXTRAS_H
 
