@@ -32,15 +32,6 @@
 #include "measure.h"
 #include "workloads.h"
 
-#define MAX_REPS 100
-
-static int usage_error(const char *program, const char *what)
-{
-    fprintf(stderr, "%s: error: %s (usage: %s [--reps 1..%d] [WORKLOAD ...])\n", program, what,
-            program, MAX_REPS);
-    return 2;
-}
-
 /* The workload's triangles in clip space, y_c negated (gl.h, flip-y). */
 static bool workload_vertices(const Workload *w, Vertices *v, Error *err)
 {
@@ -140,39 +131,14 @@ static int run_with_threads(char **argv, long threads)
     return WIFEXITED(status) ? WEXITSTATUS(status) : 1;
 }
 
-static bool find_workload(const char *name, WorkloadKind *kind)
-{
-    for (int k = 0; k < WORKLOAD_COUNT; k++)
-        if (strcmp(name, workload_name((WorkloadKind)k)) == 0) {
-            *kind = (WorkloadKind)k;
-            return true;
-        }
-    return false;
-}
-
 int main(int argc, char **argv)
 {
     const char *program = argc > 0 ? argv[0] : "bench_llvmpipe";
-    int reps = BENCH_REPS;
-    bool chosen[WORKLOAD_COUNT] = {false};
-    bool any = false;
-    for (int i = 1; i < argc; i++) {
-        WorkloadKind kind;
-        if (strcmp(argv[i], "--reps") == 0) {
-            char *end;
-            long n = i + 1 < argc ? strtol(argv[i + 1], &end, 10) : 0;
-            if (i + 1 >= argc || *end != '\0' || n < 1 || n > MAX_REPS)
-                return usage_error(program, "--reps needs a number from 1 to 100");
-            reps = (int)n;
-            i++;
-        } else if (find_workload(argv[i], &kind)) {
-            chosen[kind] = any = true;
-        } else {
-            char what[128];
-            snprintf(what, sizeof what, "unknown workload '%s'", argv[i]);
-            return usage_error(program, what);
-        }
-    }
+    int reps;
+    bool chosen[WORKLOAD_COUNT], any;
+    int usage = bench_parse_args(argc, argv, program, &reps, chosen, &any);
+    if (usage != 0)
+        return usage;
     const char *threads = getenv("LP_NUM_THREADS");
     if (!threads) {
         long cores = sysconf(_SC_NPROCESSORS_ONLN);

@@ -1,5 +1,4 @@
-/* scanline.c: lesson 04's z-buffer, step by step (scanline.h, and
- * docs/04_scanline_inverse_z.md). */
+/* scanline.c: lesson 04's z-buffer, step by step (docs/04_scanline_inverse_z.md). */
 #include "scanline.h"
 
 #include <math.h>
@@ -17,25 +16,16 @@ typedef struct {
     double inv_d; /* "projection stores 1/d" */
 } Corner;
 
-/* One side of the polygon: the chain of edges from the top corner to the
- * bottom corner, going round the polygon in direction dir (+1 or -1). */
-typedef struct {
-    const Corner *c;
-    int n, at, bottom, dir;
-} Chain;
+/* One side of the polygon: its edges from the top corner to the bottom one,
+ * going round it in direction dir (+1 or -1). */
+typedef struct { const Corner *c; int n, at, bottom, dir; } Chain;
 
 /* The first row whose centre y + 0.5 is at or below y (sub-pixel units). */
-static int64_t first_row_at_or_below(int64_t y)
-{
-    return ceil_div(y - HALF_PIXEL, S);
-}
+static int64_t first_row_at_or_below(int64_t y) { return ceil_div(y - HALF_PIXEL, S); }
 
 /* A screen coordinate rounded to the nearest 1/256 of a pixel, exactly as
  * lesson 03 rounds it: from here on coverage is decided in integers. */
-static int64_t snap(double pixels)
-{
-    return (int64_t)floor(pixels * S + 0.5);
-}
+static int64_t snap(double pixels) { return (int64_t)floor(pixels * S + 0.5); }
 
 /* Sets up the edge from a to b (sub-pixel units, a above b) at row y_first:
  * where it crosses that row's centre, its 1/d there, and their steps per
@@ -164,16 +154,36 @@ static void walk_edges(Target *t, Chain *left_chain, Chain *right_chain, int y_f
     }
 }
 
+/* Snapping moves a corner by up to 1/512 pixel; its 1/d moves along the plane
+ * through the exact corners, as a GPU's depth follows them. The plane's normal
+ * in (x, y, 1/d), (nx, ny, nz), sums the cross products a x b over the fan of
+ * triangles (v0, vi, vi+1). A sliver's steep plane is not used. */
+static void corners_on_plane(Corner *c, const ScreenVertex *v, int n)
+{
+    double w0 = c[0].inv_d, nx = 0, ny = 0, nz = 0;
+    for (int i = 1; i + 1 < n; i++) {
+        double ax = v[i].x - v[0].x, ay = v[i].y - v[0].y, aw = c[i].inv_d - w0;
+        double bx = v[i + 1].x - v[0].x, by = v[i + 1].y - v[0].y, bw = c[i + 1].inv_d - w0;
+        nx += ay * bw - aw * by;
+        ny += aw * bx - ax * bw;
+        nz += ax * by - ay * bx;
+    }
+    for (int i = 0; nz != 0 && i < n; i++) { /* 1/d changes by -(nx dx + ny dy) / nz */
+        double dx = (double)c[i].x / S - v[i].x, dy = (double)c[i].y / S - v[i].y;
+        double change = -(nx * dx + ny * dy) / nz;
+        if (fabs(change) < c[i].inv_d)
+            c[i].inv_d += change;
+    }
+}
+
 static bool corner_in_range(const ScreenVertex *v)
 {
     return isfinite(v->x) && isfinite(v->y) && isfinite(v->d) && v->d > 0 &&
            fabs(v->x) <= SCANLINE_MAX_COORD && fabs(v->y) <= SCANLINE_MAX_COORD;
 }
 
-/* A convex polygon of n screen vertices, either winding, drawn whole. False,
- * drawing nothing, when it is not convex on the screen once snapped, or has
- * a corner not finite, not in front, or beyond SCANLINE_MAX_COORD, or more
- * than POLYGON_MAX_CORNERS corners: the caller draws its triangles instead. */
+/* A convex polygon, either winding, drawn whole. False, drawing nothing (its triangles
+ * are drawn instead): not convex once snapped, a corner out of range, too many corners. */
 bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
 {
     if (n < 3)
@@ -184,13 +194,13 @@ bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
     for (int i = 0; i < n; i++) {
         if (!corner_in_range(&v[i]))
             return false;
-        /* Snapped once: everything below works on c. 1/d is computed at the
-         * corners only; between them it is stepped. */
+        /* Snapped once: everything below works on c; between corners 1/d is stepped. */
         c[i] = (Corner){snap(v[i].x), snap(v[i].y), 1.0 / v[i].d};
     }
     int turn; /* > 0: clockwise on the screen (y down) */
     if (!convex_on_screen(v, n, SUBPIXEL_ONE, &turn))
         return false;
+    corners_on_plane(c, v, n);
 
     int top = 0, bottom = 0;
     for (int i = 1; i < n; i++) {
@@ -208,17 +218,14 @@ bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
     /* Only rows on the screen are walked, whatever the polygon's size. */
     int64_t y_first = first_row_at_or_below(c[top].y);
     int64_t y_stop = first_row_at_or_below(c[bottom].y);
-    if (y_first < 0)
-        y_first = 0;
-    if (y_stop > t->height)
-        y_stop = t->height;
+    y_first = y_first < 0 ? 0 : y_first;
+    y_stop = y_stop > t->height ? t->height : y_stop;
     if (y_first < y_stop)
         walk_edges(t, left, right, (int)y_first, (int)y_stop, face, 1.0 / far);
     return true;
 }
 
-/* One face of the mesh: a convex face as one polygon, a non-convex one (or
- * one that is not convex on the screen) as its triangles (polygon.h). */
+/* One face: a convex face as one polygon, any other as its triangles (polygon.h). */
 void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
 {
     draw_face_as_polygons(t, f, ctx, draw_polygon);

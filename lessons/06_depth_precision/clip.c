@@ -9,8 +9,10 @@
 /* How far p lies inside the plane: 0 on it, negative outside; linear in clip space. */
 double plane_distance(Vec4 p, ClipPlane plane)
 {
-    /* SOLUTION BEGIN: the near plane keeps z_c >= -w_c, the far plane
-     * z_c <= w_c: a value that is 0 on the plane and >= 0 inside. */
+    /* SOLUTION BEGIN: a signed distance to the plane: 0 on it, positive on
+     * the side the plane keeps (the clip-space inequality of each plane is
+     * on the lesson's page), and linear in clip space, so that
+     * plane_crossing can find where it reaches 0. */
     return plane == NEAR_PLANE ? p.z + p.w : p.w - p.z;
     /* SOLUTION STUB
     (void)p; (void)plane;

@@ -3,16 +3,13 @@
  *   stored value   1/d, the reciprocal of the view depth
  *   cleared to     0, which means "infinitely far"
  *   a fragment     wins when its 1/d > stored (ties keep the first one drawn)
- *   rasterizer     a convex polygon, drawn whole: its left and right edges
- *                  walked down one scanline at a time, x and 1/d stepping by
- *                  a constant per row; each span filled left to right, 1/d
- *                  stepping by a constant per pixel
+ *   rasterizer     a convex polygon, drawn whole: its two sides walked down
+ *                  row by row, x and 1/d stepping by a constant per row, then
+ *                  1/d by a constant per pixel along each span
  *   fill rule      row centre y + 0.5 in [top, bottom), pixel centre x + 0.5
  *                  in [left, right): lesson 03's top-left rule, scanline form
- *
- * Corners are snapped to 1/256 pixel as in lesson 03 and an edge's x is kept
- * exactly (a whole pixel and a fraction, in integers), so lesson 04 covers
- * exactly the pixels lesson 03 covers. */
+ *   coverage       lesson 03's, exactly: corners snapped to 1/256 pixel, edge
+ *                  x kept exact (a whole pixel and a fraction, in integers) */
 #ifndef SCANLINE_H
 #define SCANLINE_H
 
@@ -22,8 +19,7 @@
 #include "rasterizer.h"
 #include "target.h"
 
-/* Nothing drawn yet: 1/d = 0 is infinitely far, so every real surface
- * (1/d > 0) is nearer. No "huge value" is needed. */
+/* Nothing drawn yet: 1/d = 0 is infinitely far; every surface (1/d > 0) is nearer. */
 #define CLEARED_INV_DEPTH 0.0f
 
 #define SUBPIXEL_BITS 8                   /* as GPUs do: 1/256 of a pixel */
@@ -56,9 +52,7 @@ bool edge_setup(Edge *e, int64_t ax, int64_t ay, double inv_a, int64_t bx, int64
                 double inv_b, int y_first);               /* false: no row to walk */
 void edge_step(Edge *e);                                  /* one scanline down */
 void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, double inv_far);
-/* A convex polygon, either winding, drawn whole; false, drawing nothing, when
- * it is not convex on the screen or a corner is out of range (then its
- * triangles are drawn instead). */
+/* A convex polygon drawn whole; false: drawn as its triangles instead. */
 bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far);
 void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
 double nearest_distance_at(const Target *t, int x, int y); /* d = 1/stored, inf if none */

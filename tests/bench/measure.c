@@ -41,3 +41,47 @@ void measure_print(FILE *out, const Measurement *m)
             m->width, m->height, m->reps, m->triangles, (unsigned long long)m->fragments,
             m->median_s, m->min_s, m->max_s, (unsigned long long)m->checksum);
 }
+
+static int usage_error(const char *program, const char *what)
+{
+    fprintf(stderr, "%s: error: %s (usage: %s [--reps 1..%d] [WORKLOAD ...])\n", program, what,
+            program, MAX_REPS);
+    return 2;
+}
+
+static bool find_workload(const char *name, WorkloadKind *kind)
+{
+    for (int k = 0; k < WORKLOAD_COUNT; k++)
+        if (strcmp(name, workload_name((WorkloadKind)k)) == 0) {
+            *kind = (WorkloadKind)k;
+            return true;
+        }
+    return false;
+}
+
+int bench_parse_args(int argc, char **argv, const char *program, int *reps,
+                     bool chosen[WORKLOAD_COUNT], bool *any)
+{
+    *reps = BENCH_REPS;
+    *any = false;
+    for (int k = 0; k < WORKLOAD_COUNT; k++)
+        chosen[k] = false;
+    for (int i = 1; i < argc; i++) {
+        WorkloadKind kind;
+        if (strcmp(argv[i], "--reps") == 0) {
+            char *end;
+            long n = i + 1 < argc ? strtol(argv[i + 1], &end, 10) : 0;
+            if (i + 1 >= argc || *end != '\0' || n < 1 || n > MAX_REPS)
+                return usage_error(program, "--reps needs a number from 1 to 100");
+            *reps = (int)n;
+            i++;
+        } else if (find_workload(argv[i], &kind)) {
+            chosen[kind] = *any = true;
+        } else {
+            char what[128];
+            snprintf(what, sizeof what, "unknown workload '%s'", argv[i]);
+            return usage_error(program, what);
+        }
+    }
+    return 0;
+}

@@ -15,6 +15,7 @@
 #include <stdio.h>
 
 #include "target.h"
+#include "workloads.h"
 
 #define BENCH_WARMUP 1
 #define BENCH_REPS 11
@@ -43,5 +44,13 @@ void target_reset(Target *t, void (*clear)(Target *t));
 void summarise_times(double *times, int n, double *median, double *min, double *max);
 
 void measure_print(FILE *out, const Measurement *m);
+
+#define MAX_REPS 100 /* --reps N: 1 to MAX_REPS */
+
+/* A bench binary's command line, [--reps N] [WORKLOAD ...]: reps (BENCH_REPS
+ * when not given) and which workloads to run (chosen[k]; all when *any is
+ * false). Returns 0, or 2 after one error line on stderr. */
+int bench_parse_args(int argc, char **argv, const char *program, int *reps,
+                     bool chosen[WORKLOAD_COUNT], bool *any);
 
 #endif

@@ -14,8 +14,9 @@
  *     of the covered pixels, at least 99.99% show the same face in lessons 03
  *     and 04 (on scenes whose faces stay in front of the near plane) and in
  *     lesson 05 (on all, `inside` first: it reaches behind the camera).
- *     Depth (view depth d, --depth-out) where both show the same face: see
- *     depth_bounds below for what is asserted and why it is not 1e-5.
+ *     Depth (view depth d, --depth-out) where both show the same face: within
+ *     1e-5 relative for lessons 04 and 05 on scenes of flat faces (one
+ *     exception, explained at depth_limit below).
  *   - Issue 19's quality bar, lesson 07 on decals at the default size: with
  *     the same --polygon-offset (and --offset-clamp), format and mapping, the
  *     pixels where either shows a decal show the same face on at least 99.5%
@@ -241,20 +242,34 @@ static bool measure(const char *lesson, const char *scene, bool snap, Agreement 
 }
 
 /* What the depth may differ by (view depth d, relative), measured and why:
- *   - lessons 03-05 interpolate 1/d over corners snapped to 1/256 pixel;
- *     llvmpipe snaps for coverage only and interpolates depth over the
- *     unsnapped corners. Moving a corner by up to 1/512 pixel tilts the
- *     plane: up to 5.3e-5 on the grazing floors of walls, grazing and inside,
- *     2.9e-4 on knot's thin triangles (lesson 03). So issue 17's 1e-5 is not
- *     met against llvmpipe as it is, by any lesson: asserted below 1e-4 on
- *     scenes of flat faces.
- *   - Given the lessons' snapped corners (--snap), the GPU's depth agrees to
- *     1.4e-5 at most (float rounding on both sides): asserted below 2e-5.
+ *   - Lessons 04 and 05 give each snapped corner the 1/d of the plane through
+ *     the exact corners, as llvmpipe evaluates depth: issue 17's bar, 1e-5 of
+ *     llvmpipe as it is, on every scene of flat faces. Both lessons are within
+ *     9e-8 of the exact depth (the ray through the pixel centre); what is left
+ *     is llvmpipe's own error: 4.1e-6 on crowd, 9.5e-7 on inside.
+ *   - One exception, grazing: llvmpipe's own depth is 1.07e-5 off the exact
+ *     one on the pixels whose centres lie on strip A's left edge (which runs
+ *     off the screen), the lessons' 8e-8 (gpu_reference's "exact depth" line):
+ *     measured 1.08e-5, asserted below 1.2e-5.
+ *   - Lesson 03 still interpolates 1/d over its snapped corners: up to 9.8e-5
+ *     on crowd's small faces, asserted below 1e-4; given the snapped corners
+ *     (--snap) the GPU agrees to 1.4e-5, asserted below 2e-5. For lessons 04
+ *     and 05 --snap is only printed: the GPU's planes then tilt, theirs not.
  *   - knot's faces are quads that are not flat: lessons 04 and 05 draw each
  *     whole with one plane, the GPU draws its two triangles: 0.66% apart,
  *     only the faces are compared there. */
-#define DEPTH_AS_IS 1e-4
+#define DEPTH_BAR 1e-5      /* issue 17, lessons 04 and 05 */
+#define DEPTH_GRAZING 1.2e-5 /* llvmpipe's own error there: see above */
+#define DEPTH_LESSON_03 1e-4
 #define DEPTH_SNAPPED 2e-5
+
+/* The depth bar of lesson l (0: lesson 03) on scene. */
+static double depth_limit(int l, const char *scene)
+{
+    if (l == 0)
+        return DEPTH_LESSON_03;
+    return strcmp(scene, "grazing") == 0 ? DEPTH_GRAZING : DEPTH_BAR;
+}
 
 static void lessons_agree_with_the_gpu(void **state)
 {
@@ -287,11 +302,13 @@ static void lessons_agree_with_the_gpu(void **state)
             snprintf(what, sizeof what, "%s on %s: pixels of the same face, at least 99.99%% "
                                         "of %ld covered", lesson, scene, a.covered);
             expect_at_least((a.covered * 9999 + 9999) / 10000, a.same, what);
-            if ((flat && a.max_rel > DEPTH_AS_IS) ||
-                ((flat || triangles) && snapped.max_rel > DEPTH_SNAPPED))
-                fail_msg("%s on %s: depth differs from the GPU by %.3g relative (at most %g "
-                         "on flat faces), by %.3g given the lessons' snapped corners (at most "
-                         "%g)", lesson, scene, a.max_rel, DEPTH_AS_IS, snapped.max_rel,
+            double limit = depth_limit(l, scene);
+            if (flat && a.max_rel > limit)
+                fail_msg("%s on %s: depth differs from the GPU by %.3g relative (at most %g)",
+                         lesson, scene, a.max_rel, limit);
+            if (triangles && snapped.max_rel > DEPTH_SNAPPED)
+                fail_msg("%s on %s: depth differs from the GPU given the snapped corners by "
+                         "%.3g relative (at most %g)", lesson, scene, snapped.max_rel,
                          DEPTH_SNAPPED);
             inside_seen = inside_seen || (l == 2 && strcmp(scene, "inside") == 0);
         }
