@@ -1,0 +1,60 @@
+/* depth_format.h: lesson 06, the depth buffer as a GPU keeps it
+ * (docs/06_depth_precision.md).
+ *
+ *   stored value   window depth z_w in [0, 1], in a format:
+ *                    unorm16, unorm24  the integer code round(z_w (2^bits - 1))
+ *                    float32           z_w itself, a float
+ *   mapping        standard  z_w = f/(f-n) (1 - n/d): 0 at near, 1 at far
+ *                  reversed  z_w = n/(f-n) (f/d - 1): 1 at near, 0 at far;
+ *                            with far = inf, z_w = n/d
+ *   cleared to     1 (standard) or 0 (reversed): the far plane
+ *   a fragment     wins when its value < stored (standard), > stored
+ *                  (reversed); a tie keeps the first one drawn
+ * Both mappings are z_w = a + b/d, affine in 1/d: lesson 04's scanline
+ * steps 1/d, and depth_test maps each fragment's 1/d to z_w. The target
+ * carries its buffer's setup (Target.depth_setup), set before clear_depth.
+ * Lesson 07 (docs/07_depth_bias.md): a face in `decal` adds o = m FACTOR +
+ * r UNITS to z_w, m its steepest slope on the screen, r one step of the format. */
+#ifndef DEPTH_FORMAT_H
+#define DEPTH_FORMAT_H
+
+#include <stddef.h>
+
+#include "rasterizer.h"
+
+typedef enum { UNORM16, UNORM24, FLOAT32 } DepthFormat;
+typedef enum { STANDARD, REVERSED } DepthMapping;
+
+typedef struct {
+    double factor, units, clamp; /* --polygon-offset FACTOR,UNITS, --offset-clamp */
+    const Mesh *mesh;            /* whose faces in `decal` get it */
+} DepthBias;
+
+typedef struct DepthSetup {
+    DepthFormat format;
+    DepthMapping mapping;
+    double near, far; /* far may be INFINITY with REVERSED */
+    double a, b;      /* z_w = a + b / d */
+    DepthBias bias;
+    double offset; /* o of the face being drawn: 0 but on a decal */
+} DepthSetup;
+
+/* The steps, in the order depth_buffer.c takes them (each is explained there). */
+DepthSetup depth_setup(DepthFormat format, DepthMapping mapping, double near, double far);
+double window_depth(const DepthSetup *s, double d);  /* z_w of view depth d */
+double view_depth(const DepthSetup *s, double z_w);  /* and back */
+float encode_depth(DepthFormat format, float z_w);   /* what the buffer stores */
+double decode_depth(DepthFormat format, float stored);
+double depth_quantum(DepthFormat format, double z_w); /* one step of z_w there */
+double depth_step(const DepthSetup *s, double d);     /* ... and of d, in world units */
+/* Lesson 07's steps (depth_bias.c): m, r and o of a face, and the face drawn. */
+double depth_slope(const DepthSetup *s, const ScreenVertex *v, int n);
+double resolvable_difference(const DepthSetup *s, const ScreenVertex *v, int n);
+double polygon_offset(const DepthBias *bias, double m, double r);
+void draw_biased_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
+
+/* clear_depth, then every face clipped (clip.c) and drawn by lesson 04's
+ * scanline into the buffer of z_w. */
+extern const Rasterizer DEPTH_PRECISION_ZBUFFER;
+
+#endif
