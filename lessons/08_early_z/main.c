@@ -1,38 +1,31 @@
 /* main.c: lesson 08, early-Z and the depth pre-pass (docs/08_early_z.md).
  *
- * The outline of the program. What this lesson teaches is in early_z.c:
- * a fragment shader with a real cost, run after the depth test (early),
- * before it (late), or once per pixel after a depth-only pass (prepass), on
- * faces sorted or not; cutouts, which discard, fall back to late. The depth
- * test is lesson 07's (depth_buffer.c, unorm24), faces are clipped by lesson
- * 05's clip.c and drawn by lesson 04's scanline.c, all unchanged. What the
- * lesson shows but does not teach (the flags' words, the heat map, the bug)
- * is in extras/. */
+ * The outline of the program. What this lesson teaches is in early_z.c: the
+ * fragment shader runs after the depth test (early), before it (late), or
+ * after a depth-only pass (prepass). Lesson 07's files draw, unchanged. What
+ * the lesson shows but does not teach (the shader, the heat map) is in extras/. */
 #include <stdio.h>
 
 #include "early_z.h"
 #include "extras/extras.h"
 #include "lesson.h"
 
-/* The counts of the lesson: how much shading the picture cost. */
+/* How much shading the picture cost. */
 static void print_shading(const Target *t)
 {
     const EarlyZ *z = (const EarlyZ *)t->depth_setup;
-    const ShadeCounts *c = &z->counts;
-    printf("  z-mode %s, sort %s: fragments tested %llu, shaded %llu, pixels covered %llu\n",
-           z_mode_name(z->mode), sort_name(z->sort), (unsigned long long)c->tested,
-           (unsigned long long)c->shaded, (unsigned long long)c->covered);
-    printf("  shaded / covered: %.3f\n",
-           c->covered ? (double)c->shaded / (double)c->covered : 0.0);
+    printf("  z-mode %s, sort %s: fragments tested %llu, shaded %llu, pixels covered %llu\n"
+           "  shaded / covered: %.3f\n", z_mode_name(z->mode), sort_name(z->sort), z->tested,
+           z->shaded, z->covered, z->covered ? (double)z->shaded / (double)z->covered : 0.0);
 }
 
 static const Lesson LESSON = {
     .program = "08_early_z",
-    .purpose = "Lesson 08: early-Z and the depth pre-pass: the fragment shader runs once "
-               "per covered pixel, not once per fragment.",
+    .purpose = "Lesson 08: early-Z and the depth pre-pass: the fragment shader runs once per "
+               "covered pixel, not once per fragment.",
     .scene = "crowd",
-    .rasterizer = &DEPTH_PRECISION_ZBUFFER, /* with lesson 08's draw_shaded_face */
-    .depth_rule = {"depth buffer", "z_w", "face", SMALLER_IS_NEARER},
+    .rasterizer = &DEPTH_PRECISION_ZBUFFER, /* with lesson 07's draw_biased_face */
+    .depth_rule = {"depth buffer", "z_w", "face", SMALLER_IS_NEARER}, /* unorm24, standard */
     .extras = &EXTRAS,
     .report = print_shading,
 };
@@ -44,7 +37,7 @@ int main(int argc, char **argv)
     if (status != RUN_GO)
         return status;
     EarlyZ z = early_z_chosen(&run);                   /* --z-mode, --sort, --bug */
-    if (!early_z_begin(&z, &run, &run.err))            /* the shader's buffers */
+    if (!early_z_begin(&z, &run, &run.err))            /* the buffers; draw through z */
         return run_end(&run);
     run.rz->clear(&run.target);                        /* clear: to the far plane, 1 */
     if (run_draw(&run) &&                              /* draw: sorted, one or two passes */

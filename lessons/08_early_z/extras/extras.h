@@ -14,6 +14,19 @@ EarlyZ early_z_chosen(const Run *run); /* unorm24, standard; the mode, sort and 
 const char *z_mode_name(ZMode mode);
 const char *sort_name(SortOrder sort);
 
+/* The fragment shader (shader.c): the face's flat colour lit (Lambert, from
+ * its normal), darkened by up to 30% by SHADER_OCTAVES octaves of value noise. */
+#define SHADER_OCTAVES 6
+Rgb shade_fragment(Rgb lit, int x, int y);
+
+/* order[0 .. nfaces-1]: mesh order, or by the mean view depth d of each face's
+ * corners, nearest first (front-to-back) or last (back-to-front). */
+void sort_faces(const Render *r, SortOrder sort, int *order);
+/* Lesson 07's draw_biased_face, each fragment it made handed to fragment(). */
+void draw_shaded_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
+bool early_z_begin(EarlyZ *z, Run *run, Error *err); /* the run draws through z */
+void early_z_free(EarlyZ *z);
+
 #define HEAT_CLASSES 7 /* 0, 1, ..., 5 and 6 or more times shaded */
 #define HEAT_LEGEND_HEIGHT 22 /* the band under the picture */
 Rgb heat_colour(uint32_t times);
