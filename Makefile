@@ -331,6 +331,9 @@ bench_lesson_objs = $(patsubst %.c,$(BENCH_DIR)/obj/%.o,$(filter-out %/main.c,$(
 BENCH_SUPPORT := $(patsubst %.c,$(BENCH_DIR)/obj/%.o,$(wildcard common/*.c) \
                    tests/bench/workloads.c tests/bench/measure.c)
 BENCH_BINS    := $(BENCH_DIR)/bench_limit $(BENCH_LESSONS:%=$(BENCH_DIR)/bench_%)
+# Lesson 08's z-modes and sorts on its crowd scene, shader included
+# (tests/bench/early_z.c), when lesson 08 is there.
+BENCH_BINS    += $(if $(wildcard lessons/08_early_z/main.c),$(BENCH_DIR)/bench_early_z)
 # Mesa's llvmpipe on the same workloads, one thread and all cores
 # (gpu/bench_llvmpipe.c), wherever the GPU reference is built.
 BENCH_BINS    += $(if $(GPU_REF),$(BENCH_DIR)/bench_llvmpipe)
@@ -356,6 +359,11 @@ $(BENCH_DIR)/obj/gpu/bench_llvmpipe.o $(BENCH_DIR)/obj/gpu/gl.o: | $(GPU_DEPS_OK
 $(BENCH_DIR)/bench_llvmpipe: $(BENCH_DIR)/obj/gpu/bench_llvmpipe.o $(BENCH_DIR)/obj/gpu/gl.o \
                              $(BENCH_SUPPORT)
 	$(CC) $(BENCH_CFLAGS) $(LDFLAGS) $^ -o $@ $(GL_LIBS) $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
+
+$(BENCH_DIR)/obj/tests/bench/early_z.o: OBJ_INCLUDES += -Ilessons/08_early_z -Ilessons/08_early_z/extras
+$(BENCH_DIR)/bench_early_z: $(BENCH_DIR)/obj/tests/bench/early_z.o $(call bench_lesson_objs,08_early_z) \
+                            $(BENCH_SUPPORT)
+	$(CC) $(BENCH_CFLAGS) $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 
 $(BENCH_DIR)/bench_limit: $(BENCH_DIR)/obj/tests/bench/limit.o $(BENCH_SUPPORT)
 	$(CC) $(BENCH_CFLAGS) $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
