@@ -132,6 +132,23 @@ for pair in no_bias:0,0 units_only:0,-2 recommended:-1,-1 too_much:-1000,-1000; 
 done
 echo "make-doc-images: 07_depth_bias done"
 
+# ---- 08_early_z: crowd's heat maps of times shaded (late, early unsorted,
+# early front to back, prepass), its shader's picture, and a fence close up
+# with and without --bug early-z-with-discard.
+make -s BUILD="$build" "$build/bin/08_early_z"
+l08="$build/bin/08_early_z"
+for pair in late:late:none early:early:none sorted:early:front-to-back prepass:prepass:none; do
+    rest=${pair#*:}
+    "$l08" --z-mode "${rest%%:*}" --sort "${rest#*:}" --out "$build/08.png" \
+           --shade-count-out "$images/08_heat_${pair%%:*}.png" >/dev/null
+done
+"$l08" --out "$build/08.png" --colour-out "$images/08_crowd.png" >/dev/null
+for bug in "" early-z-with-discard; do # close behind the first fence
+    "$l08" --width 400 --height 300 --eye 0,0.8,-5 --target 0,0.6,-12 ${bug:+--bug "$bug"} \
+           --out "$build/08.png" --colour-out "$images/08_fence${bug:+_bug}.png" >/dev/null
+done
+echo "make-doc-images: 08_early_z done"
+
 # ---- Diagrams drawn by code (tools/diagrams.c): lesson 02's edge functions
 # and top-left rule, lesson 03's d and 1/d along a row, lesson 04's edge walk
 make -s BUILD="$build" "$build/tools/diagrams"

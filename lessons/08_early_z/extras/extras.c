@@ -129,6 +129,9 @@ static bool after_write(Run *run, Error *err)
 static bool choose(Run *run, Error *err)
 {
     const char *const *x = run->opt.extra;
+    if (run->opt.steps_dir) /* crowd has more faces than --steps takes, and a prepass draws twice */
+        return error_set(err, "--steps does not apply to 08_early_z (the work it counts is per "
+                              "fragment, not per face: see --shade-count-out)");
     if (x[FLAG_Z_MODE] && find_name(x[FLAG_Z_MODE], MODE_NAMES, 3) < 0)
         return error_set(err, "--z-mode: '%s' is not one of late, early, prepass", x[FLAG_Z_MODE]);
     if (x[FLAG_SORT] && find_name(x[FLAG_SORT], SORT_NAMES, 3) < 0)
