@@ -109,8 +109,8 @@ DepthPlane depth_plane(const DepthSetup *s, const ScreenVertex v[3])
     /* SOLUTION BEGIN: the slopes from dz01 = gx dx01 + gy dy01 and
      * dz20 = gx dx20 + gy dy20, then the plane's value at (0.5, 0.5). */
     float inv_area = 1.0f / area;
-    p.gx = (dz01 * dy20 - dz20 * dy01) * inv_area;
-    p.gy = (dz20 * dx01 - dz01 * dx20) * inv_area;
+    p.gx = dz01 * (dy20 * inv_area) - dz20 * (dy01 * inv_area);
+    p.gy = dz20 * (dx01 * inv_area) - dz01 * (dx20 * inv_area);
     p.a0 = z[0] - (p.gx * (x[0] - 0.5f) + p.gy * (y[0] - 0.5f));
     /* SOLUTION END */
     return p;
