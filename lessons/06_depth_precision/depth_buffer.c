@@ -91,14 +91,20 @@ double depth_step(const DepthSetup *s, double d)
 /* A triangle's plane of z_w as a GPU sets it up, every step in float32. Its
  * corners' z_w first: the vertex shader hands on z_c = a w_c + b and w_c as
  * floats, and the divide is a float's. Then the plane through the corners
- * (x, y, z_w), written from the centre of pixel (0, 0). */
+ * (x, y, z_w), written from the centre of pixel (0, 0). The order of the
+ * corners changes the rounding: a triangle that turns clockwise in OpenGL's
+ * window (y up; counter-clockwise here) is set up from corners 1, 0, 2, as
+ * llvmpipe does. */
 DepthPlane depth_plane(const DepthSetup *s, const ScreenVertex v[3])
 {
+    double turn = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[2].x - v[0].x) * (v[1].y - v[0].y);
+    const int *order = turn < 0 ? (const int[3]){1, 0, 2} : (const int[3]){0, 1, 2};
     float x[3], y[3], z[3];
     for (int k = 0; k < 3; k++) {
-        x[k] = (float)v[k].x;
-        y[k] = (float)v[k].y;
-        z[k] = (float)(s->a * v[k].d + s->b) * (1.0f / (float)v[k].d);
+        const ScreenVertex *c = &v[order[k]];
+        x[k] = (float)c->x;
+        y[k] = (float)c->y;
+        z[k] = (float)(s->a * c->d + s->b) * (1.0f / (float)c->d);
     }
     DepthPlane p = {z[0], 0, 0};
     float dx01 = x[0] - x[1], dy01 = y[0] - y[1], dz01 = z[0] - z[1];
