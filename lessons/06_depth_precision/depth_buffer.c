@@ -123,9 +123,8 @@ DepthPlane depth_plane(const DepthSetup *s, const ScreenVertex v[3])
 }
 
 /* The triangle as the GPU sets it up: clipped at near and far (clip.c),
- * divided onto the screen, clipped to the guard band (guard_band.h), and of
- * its corners then the fan triangle of largest area (the plane is the same
- * from any; this one is the steadiest). */
+ * divided onto the screen and clipped to the guard band (guard_band.h); its
+ * plane then from its first three corners (any three give the same plane). */
 static void triangle_plane(Target *t, const ScreenFace *tri)
 {
     Vec4 kept[CLIP_MAX_OUT(3)];
@@ -133,22 +132,13 @@ static void triangle_plane(Target *t, const ScreenFace *tri)
     int n = tri->clip ? clip_polygon(tri->clip, 3, kept) : 3;
     for (int k = 0; k < n; k++)
         on[k] = tri->clip ? clip_to_screen(kept[k], t->width, t->height) : tri->v[k];
-    n = guard_band_clip(on, n, t->width, t->height, LINEAR_INV_D, v);
-    double largest = -1;
-    for (int k = 1; k + 1 < n; k++) {
-        double area = fabs((v[k].x - v[0].x) * (v[k + 1].y - v[0].y) -
-                           (v[k + 1].x - v[0].x) * (v[k].y - v[0].y));
-        if (area > largest) {
-            largest = area;
-            t->depth_setup->plane = depth_plane(t->depth_setup,
-                                                (ScreenVertex[3]){v[0], v[k], v[k + 1]});
-        }
-    }
+    if (guard_band_clip(on, n, t->width, t->height, LINEAR_INV_D, v) >= 3)
+        t->depth_setup->plane = depth_plane(t->depth_setup, v);
 }
 
 /* A face, triangle by triangle as a GPU draws it: each its own plane of z_w,
  * then drawn (clipped, divided, scanned) as lesson 05 draws a face. */
-static void draw_triangles(Target *t, const ScreenFace *f, const DrawContext *ctx)
+void draw_triangles(Target *t, const ScreenFace *f, const DrawContext *ctx)
 {
     for (int k = 0; k < f->n - 2; k++) {
         const int *c = f->tris[k].c;
@@ -183,14 +173,14 @@ void clear_depth(Target *t)
 }
 
 /* The depth test of one fragment at pixel i = y width + x. Its z_w is the
- * triangle's plane at the pixel centre, in float32 as a GPU evaluates it (not
- * the scanline's 1/d: the same depth, in double); then it is stored in the
- * buffer's format. */
+ * triangle's plane at the pixel centre (plus the offset, lesson 07's), in
+ * float32 as a GPU evaluates it, not the scanline's 1/d; then it is stored
+ * in the buffer's format. */
 inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 {
     const DepthSetup *s = t->depth_setup;
     float x = (float)(i % (size_t)t->width), y = (float)(i / (size_t)t->width);
-    float z_w = s->plane.a0 + s->plane.gx * x + s->plane.gy * y;
+    float z_w = s->plane.a0 + s->plane.gx * x + s->plane.gy * y + s->offset;
     (void)inv_d;
     float value = encode_depth(s->format, z_w), stored = t->depth[i];
     /* SOLUTION BEGIN: does the fragment win pixel i? Which way is nearer
@@ -211,7 +201,7 @@ inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 }
 
 /* A stored value back as view depth d (--depth-out, --shade depth). */
-static double stored_to_depth(const Target *t, float stored)
+double stored_to_depth(const Target *t, float stored)
 {
     const DepthSetup *s = t->depth_setup;
     return stored == cleared(s) ? INFINITY : view_depth(s, decode_depth(s->format, stored));

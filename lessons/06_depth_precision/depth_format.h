@@ -37,6 +37,7 @@ typedef struct DepthSetup {
     double near, far; /* far may be INFINITY with REVERSED */
     double a, b;      /* z_w = a + b / d */
     DepthPlane plane; /* of the triangle being drawn */
+    float offset;     /* added to its z_w: 0 (lesson 07's depth bias) */
 } DepthSetup;
 
 /* The steps, in the order depth_buffer.c takes them (each is explained there). */
@@ -48,6 +49,8 @@ double decode_depth(DepthFormat format, float stored);
 double depth_quantum(DepthFormat format, double z_w); /* one step of z_w there */
 double depth_step(const DepthSetup *s, double d);     /* ... and of d, in world units */
 DepthPlane depth_plane(const DepthSetup *s, const ScreenVertex v[3]); /* a triangle's */
+void draw_triangles(Target *t, const ScreenFace *f, const DrawContext *ctx); /* each with its plane */
+double stored_to_depth(const Target *t, float stored); /* a stored value back as d */
 
 /* clear_depth, then every triangle clipped (clip.c) and drawn by lesson 04's
  * scanline into the buffer of z_w, its depth from its plane. */

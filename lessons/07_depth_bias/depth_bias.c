@@ -7,6 +7,9 @@
 
 #include <math.h>
 
+#include "clip.h"
+#include "scanline.h"
+
 
 /* m: the steepest slope of z_w on the screen. Over a triangle z_w is the
  * plane z_w = a0 + gx x + gy y (lesson 06), so m = max(|gx|, |gy|), as OpenGL
@@ -54,13 +57,36 @@ double polygon_offset(const DepthBias *bias, double m, double r)
     /* SOLUTION END */
 }
 
-/* A triangle's o: m FACTOR + r UNITS on a face in `decal`, 0 on any other,
- * which is then drawn exactly as lesson 06 draws it. Its corners v[0 .. n-1]
- * are on the screen, clipped as the plane was set up (depth_buffer.c). */
-float triangle_offset(const DepthSetup *s, int face, const ScreenVertex *v, int n)
+/* The face's corners on the screen, as its triangles are set up: clipped at
+ * near and far (clip.c) and divided, or as they are for a face made there. */
+static int face_on_screen(const Target *t, const ScreenFace *f, ScreenVertex *v)
 {
-    if (!s->bias.mesh || !mesh_face_in(s->bias.mesh, face, "decal") || n < 3)
-        return 0.0f;
-    return (float)polygon_offset(&s->bias, depth_slope(&s->plane),
-                                 resolvable_difference(s, v, n));
+    Vec4 kept[CLIP_MAX_OUT(CLIP_MAX_IN)];
+    int n = !f->clip ? f->n : f->n <= CLIP_MAX_IN ? clip_polygon(f->clip, f->n, kept) : 0;
+    for (int k = 0; k < n && n <= CLIP_MAX_OUT(CLIP_MAX_IN); k++)
+        v[k] = f->clip ? clip_to_screen(kept[k], t->width, t->height) : f->v[k];
+    return n <= CLIP_MAX_OUT(CLIP_MAX_IN) ? n : 0;
 }
+
+/* One face: a decal is drawn with its o, m from its plane (its triangles lie
+ * in one) and r from its corners; any other face with o = 0, exactly as
+ * lesson 06 draws it. */
+static void draw_biased_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+{
+    DepthSetup *s = t->depth_setup;
+    ScreenVertex v[CLIP_MAX_OUT(CLIP_MAX_IN)];
+    int n;
+    if (s->bias.mesh && mesh_face_in(s->bias.mesh, f->face, "decal") &&
+        (n = face_on_screen(t, f, v)) >= 3) {
+        DepthPlane p = depth_plane(s, v);
+        s->offset = (float)polygon_offset(&s->bias, depth_slope(&p),
+                                          resolvable_difference(s, v, n));
+    }
+    draw_triangles(t, f, ctx);
+    s->offset = 0;
+}
+
+const Rasterizer DEPTH_BIAS_ZBUFFER = {
+    .clear = clear_depth, .draw_face = draw_biased_face, .stored_to_depth = stored_to_depth,
+    .clips = true,
+};

@@ -15,7 +15,6 @@
 DepthSetup depth_setup(DepthFormat format, DepthMapping mapping, double near, double far)
 {
     DepthSetup s = {.format = format, .mapping = mapping, .near = near, .far = far};
-    /* SOLUTION BEGIN: a and b of each mapping; reversed with far = inf is n/d. */
     if (mapping == STANDARD) {
         s.a = far / (far - near); /* f/(f-n) (1 - n/d) */
         s.b = -near * s.a;
@@ -25,10 +24,6 @@ DepthSetup depth_setup(DepthFormat format, DepthMapping mapping, double near, do
         s.a = -near / (far - near); /* n/(f-n) (f/d - 1) */
         s.b = -far * s.a;
     }
-    /* SOLUTION STUB
-    s.b = near;
-    */
-    /* SOLUTION END */
     return s;
 }
 
@@ -53,16 +48,10 @@ static double unorm_max(DepthFormat format)
  * so a float holds it exactly. For float32, z_w itself. */
 float encode_depth(DepthFormat format, float z_w)
 {
-    /* SOLUTION BEGIN: the code of z_w, or z_w itself for float32. */
     if (format == FLOAT32)
         return z_w;
     float z = z_w < 0 ? 0.0f : z_w > 1 ? 1.0f : z_w;
     return rintf(z * (float)unorm_max(format));
-    /* SOLUTION STUB
-    (void)format;
-    return z_w;
-    */
-    /* SOLUTION END */
 }
 
 double decode_depth(DepthFormat format, float stored)
@@ -112,20 +101,16 @@ DepthPlane depth_plane(const DepthSetup *s, const ScreenVertex v[3])
     float area = dx01 * dy20 - dx20 * dy01;
     if (area == 0)
         return p; /* no pixel centre inside */
-    /* SOLUTION BEGIN: the slopes from dz01 = gx dx01 + gy dy01 and
-     * dz20 = gx dx20 + gy dy20, then the plane's value at (0.5, 0.5). */
     float inv_area = 1.0f / area;
     p.gx = dz01 * (dy20 * inv_area) - dz20 * (dy01 * inv_area);
     p.gy = dz20 * (dx01 * inv_area) - dz01 * (dx20 * inv_area);
     p.a0 = z[0] - (p.gx * (x[0] - 0.5f) + p.gy * (y[0] - 0.5f));
-    /* SOLUTION END */
     return p;
 }
 
 /* The triangle as the GPU sets it up: clipped at near and far (clip.c),
- * divided onto the screen, clipped to the guard band (guard_band.h), and of
- * its corners then the fan triangle of largest area (the plane is the same
- * from any; this one is the steadiest). */
+ * divided onto the screen and clipped to the guard band (guard_band.h); its
+ * plane then from its first three corners (any three give the same plane). */
 static void triangle_plane(Target *t, const ScreenFace *tri)
 {
     Vec4 kept[CLIP_MAX_OUT(3)];
@@ -133,23 +118,13 @@ static void triangle_plane(Target *t, const ScreenFace *tri)
     int n = tri->clip ? clip_polygon(tri->clip, 3, kept) : 3;
     for (int k = 0; k < n; k++)
         on[k] = tri->clip ? clip_to_screen(kept[k], t->width, t->height) : tri->v[k];
-    n = guard_band_clip(on, n, t->width, t->height, LINEAR_INV_D, v);
-    double largest = -1;
-    for (int k = 1; k + 1 < n; k++) {
-        double area = fabs((v[k].x - v[0].x) * (v[k + 1].y - v[0].y) -
-                           (v[k + 1].x - v[0].x) * (v[k].y - v[0].y));
-        if (area > largest) {
-            largest = area;
-            t->depth_setup->plane = depth_plane(t->depth_setup,
-                                                (ScreenVertex[3]){v[0], v[k], v[k + 1]});
-        }
-    }
-    t->depth_setup->offset = triangle_offset(t->depth_setup, tri->face, v, n); /* lesson 07 */
+    if (guard_band_clip(on, n, t->width, t->height, LINEAR_INV_D, v) >= 3)
+        t->depth_setup->plane = depth_plane(t->depth_setup, v);
 }
 
 /* A face, triangle by triangle as a GPU draws it: each its own plane of z_w,
  * then drawn (clipped, divided, scanned) as lesson 05 draws a face. */
-static void draw_triangles(Target *t, const ScreenFace *f, const DrawContext *ctx)
+void draw_triangles(Target *t, const ScreenFace *f, const DrawContext *ctx)
 {
     for (int k = 0; k < f->n - 2; k++) {
         const int *c = f->tris[k].c;
@@ -184,10 +159,9 @@ void clear_depth(Target *t)
 }
 
 /* The depth test of one fragment at pixel i = y width + x. Its z_w is the
- * triangle's plane at the pixel centre, in float32 as a GPU evaluates it (not
- * the scanline's 1/d: the same depth, in double); then it is stored in the
- * buffer's format. Lesson 07: the triangle's bias o is added first, before
- * the format rounds z_w, as in OpenGL. */
+ * triangle's plane at the pixel centre (plus the offset, lesson 07's), in
+ * float32 as a GPU evaluates it, not the scanline's 1/d; then it is stored
+ * in the buffer's format. */
 inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 {
     const DepthSetup *s = t->depth_setup;
@@ -195,25 +169,17 @@ inline bool depth_test(Target *t, size_t i, int face, float inv_d)
     float z_w = s->plane.a0 + s->plane.gx * x + s->plane.gy * y + s->offset;
     (void)inv_d;
     float value = encode_depth(s->format, z_w), stored = t->depth[i];
-    /* SOLUTION BEGIN: does the fragment win pixel i? Which way is nearer
-     * depends on the mapping; a tie keeps the fragment drawn first. */
     bool passed = s->mapping == REVERSED ? value > stored : value < stored;
-    /* SOLUTION STUB
-    bool passed = false;
-    */
-    /* SOLUTION END */
     target_record(t, i, face, value, stored, passed);
-    /* SOLUTION BEGIN: a fragment that wins leaves its value and face there. */
     if (passed) {
         t->depth[i] = value;
         t->face[i] = face;
     }
-    /* SOLUTION END */
     return passed;
 }
 
 /* A stored value back as view depth d (--depth-out, --shade depth). */
-static double stored_to_depth(const Target *t, float stored)
+double stored_to_depth(const Target *t, float stored)
 {
     const DepthSetup *s = t->depth_setup;
     return stored == cleared(s) ? INFINITY : view_depth(s, decode_depth(s->format, stored));

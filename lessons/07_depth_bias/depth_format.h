@@ -15,9 +15,9 @@
  * (z_c = a w_c + b, w_c = d), then each triangle's plane of z_w, evaluated
  * at every pixel centre the scanline covers. The target carries its buffer's
  * setup (Target.depth_setup), set before clear_depth.
- * Lesson 07 (docs/07_depth_bias.md): a triangle of a face in `decal` adds
- * o = m FACTOR + r UNITS to z_w, m its steepest slope on the screen, r one
- * step of the format there. */
+ * Lesson 07 (docs/07_depth_bias.md): a face in `decal` adds o = m FACTOR +
+ * r UNITS to z_w, m its steepest slope on the screen, r one step of the
+ * format there. */
 #ifndef DEPTH_FORMAT_H
 #define DEPTH_FORMAT_H
 
@@ -45,8 +45,8 @@ typedef struct DepthSetup {
     double near, far; /* far may be INFINITY with REVERSED */
     double a, b;      /* z_w = a + b / d */
     DepthPlane plane; /* of the triangle being drawn */
+    float offset;     /* added to its z_w: o on a decal, else 0 */
     DepthBias bias;
-    float offset; /* o of the triangle being drawn: 0 but on a decal */
 } DepthSetup;
 
 /* The steps, in the order depth_buffer.c takes them (each is explained there). */
@@ -58,14 +58,17 @@ double decode_depth(DepthFormat format, float stored);
 double depth_quantum(DepthFormat format, double z_w); /* one step of z_w there */
 double depth_step(const DepthSetup *s, double d);     /* ... and of d, in world units */
 DepthPlane depth_plane(const DepthSetup *s, const ScreenVertex v[3]); /* a triangle's */
-/* Lesson 07's steps (depth_bias.c): m, r and o of a triangle. */
+void draw_triangles(Target *t, const ScreenFace *f, const DrawContext *ctx); /* each with its plane */
+double stored_to_depth(const Target *t, float stored); /* a stored value back as d */
+/* Lesson 07's steps (depth_bias.c): m, r and o of a face. */
 double depth_slope(const DepthPlane *p);
 double resolvable_difference(const DepthSetup *s, const ScreenVertex *v, int n);
 double polygon_offset(const DepthBias *bias, double m, double r);
-float triangle_offset(const DepthSetup *s, int face, const ScreenVertex *v, int n);
 
 /* clear_depth, then every triangle clipped (clip.c) and drawn by lesson 04's
  * scanline into the buffer of z_w, its depth from its plane. */
 extern const Rasterizer DEPTH_PRECISION_ZBUFFER;
+/* The same, but a face in `decal` drawn with its o (depth_bias.c). */
+extern const Rasterizer DEPTH_BIAS_ZBUFFER;
 
 #endif
