@@ -118,6 +118,9 @@ DepthPlane depth_plane(const DepthSetup *s, const ScreenVertex v[3])
     p.gx = dz01 * (dy20 * inv_area) - dz20 * (dy01 * inv_area);
     p.gy = dz20 * (dx01 * inv_area) - dz01 * (dx20 * inv_area);
     p.a0 = z[0] - (p.gx * (x[0] - 0.5f) + p.gy * (y[0] - 0.5f));
+    /* SOLUTION STUB
+    (void)dz01; (void)dz20;
+    */
     /* SOLUTION END */
     return p;
 }

@@ -106,7 +106,7 @@ static void without_bias_decals_lose_a_good_share(void **state)
 /* Units alone: a poster on the wall is clean; markings on the floor, seen
  * at a grazing angle, still fight (measured: the poster 0.000 without bias
  * and 1.000 with 0,-2; the edge line 0.199 and the stripe 0.611 with it). */
-static void units_only_fix_the_sign_not_the_floor(void **state)
+static void units_only_fix_the_posters_not_the_floor(void **state)
 {
     (void)state;
     char *none = run_decals("0,0", "unorm24", "standard", NULL, NULL);
@@ -246,7 +246,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(without_bias_decals_lose_a_good_share),
-        cmocka_unit_test(units_only_fix_the_sign_not_the_floor),
+        cmocka_unit_test(units_only_fix_the_posters_not_the_floor),
         cmocka_unit_test(recommended_bias_wins_every_decal_pixel),
         cmocka_unit_test(too_much_bias_shows_the_poster_through_the_pillar),
         cmocka_unit_test(without_bias_lesson_06s_picture),
