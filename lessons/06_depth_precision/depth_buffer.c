@@ -88,13 +88,10 @@ double depth_step(const DepthSetup *s, double d)
     return depth_quantum(s->format, window_depth(s, d)) * d * d / fabs(s->b);
 }
 
-/* A triangle's plane of z_w as a GPU sets it up, every step in float32. Its
- * corners' z_w first: the vertex shader hands on z_c = a w_c + b and w_c as
- * floats, and the divide is a float's. Then the plane through the corners
- * (x, y, z_w), written from the centre of pixel (0, 0). The order of the
- * corners changes the rounding: a triangle that turns clockwise in OpenGL's
- * window (y up; counter-clockwise here) is set up from corners 1, 0, 2, as
- * llvmpipe does. */
+/* A triangle's plane of z_w as a GPU sets it up, all in float32: the corners'
+ * z_w = z_c (1 / w_c), z_c = a w_c + b and w_c handed on as floats; then the
+ * plane through (x, y, z_w), from the centre of pixel (0, 0). A triangle
+ * clockwise in OpenGL's window (y up) starts at corner 1, as in llvmpipe. */
 DepthPlane depth_plane(const DepthSetup *s, const ScreenVertex v[3])
 {
     double turn = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[2].x - v[0].x) * (v[1].y - v[0].y);
