@@ -91,7 +91,7 @@ static bool measure_workload(const char *name, const Workload *w, int reps, bool
 {
     Vertices v = {0};
     Gpu gpu = {0};
-    GpuSetup setup = {DEPTH_UNORM24, MAP_STANDARD, ORIENT_FLIP_Y};
+    GpuSetup setup = {DEPTH_UNORM24, MAP_GL, ORIENT_FLIP_Y}; /* gluPerspective z_c */
     bool ok = workload_vertices(w, &v, err) && gpu_open(&gpu, err) &&
               gpu_prepare(&gpu, &setup, w->width, w->height, &v, err);
     if (ok) {

@@ -11,7 +11,7 @@
 
 const char *const FORMAT_NAMES[3] = {"unorm16", "unorm24", "float32"};
 
-const char *const MAPPING_NAMES[2] = {"standard", "reversed"};
+const char *const MAPPING_NAMES[3] = {"standard", "reversed", "gl"};
 
 const char *const ORIENT_NAMES[4] = {"flip-y", "upper-left", "both", "rows"};
 static const GLenum FORMAT_GL[3] = {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24,
@@ -163,7 +163,7 @@ bool gpu_prepare(Gpu *gpu, const GpuSetup *g, int width, int height,
     bool upper = g->orient == ORIENT_UPPER_LEFT || g->orient == ORIENT_BOTH;
     bool reversed = g->mapping == MAP_REVERSED;
     glClipControl(upper ? GL_UPPER_LEFT : GL_LOWER_LEFT,
-                  reversed ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
+                  g->mapping == MAP_GL ? GL_NEGATIVE_ONE_TO_ONE : GL_ZERO_TO_ONE);
     glViewport(0, 0, width, height);
     glDisable(GL_CULL_FACE);
     glDisable(GL_DITHER);

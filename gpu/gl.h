@@ -7,9 +7,12 @@
  *                 names another driver (GALLIUM_DRIVER, LIBGL_ALWAYS_SOFTWARE)
  *   gpu_prepare   the shaders, a framebuffer of RGBA8 colour and the chosen
  *                 depth format, the vertices, and the depth test:
- *                 standard  z_w = (z_c / w_c + 1) / 2, cleared to 1, LESS
+ *                 standard  glClipControl(.., GL_ZERO_TO_ONE), cleared to 1,
+ *                           LESS (the caller puts z_c = f (w_c - n) / (f - n))
  *                 reversed  glClipControl(.., GL_ZERO_TO_ONE), cleared to 0,
  *                           GREATER (the caller puts z_c = n (f - w_c) / (f - n))
+ *                 gl        OpenGL's default range: z_w = (z_c / w_c + 1) / 2,
+ *                           gluPerspective's z_c, cleared to 1, LESS
  *                 a tie keeps the fragment drawn first, as in the lessons
  *   gpu_draw      clear, draw every triangle, glFinish: the seconds it took
  *   gpu_draw_offset  the same, with glPolygonOffset(factor, units) (and
@@ -28,8 +31,8 @@
 typedef enum { DEPTH_UNORM16, DEPTH_UNORM24, DEPTH_FLOAT32 } DepthFormat;
 extern const char *const FORMAT_NAMES[3];
 
-typedef enum { MAP_STANDARD, MAP_REVERSED } DepthMapping;
-extern const char *const MAPPING_NAMES[2];
+typedef enum { MAP_STANDARD, MAP_REVERSED, MAP_GL } DepthMapping;
+extern const char *const MAPPING_NAMES[3];
 
 /* How the lessons' y-down rows are put on OpenGL's y-up window:
  *   flip-y       y_c negated (by the caller); framebuffer row r is the lessons' row r

@@ -5,7 +5,7 @@
  *   gpu_reference [--scene NAME | --obj FILE.obj] [camera flags] [--width N]
  *                 [--height N] [--id-out FILE.png] [--depth-out FILE.pfm]
  *                 [--out FILE.png] [--depth-format unorm16|unorm24|float32]
- *                 [--depth-mapping standard|reversed] [--far inf] [--repeat N]
+ *                 [--depth-mapping standard|reversed|gl] [--far inf] [--repeat N]
  *                 [--orientation HOW] [--snap] [--agree-id F.png [--agree-depth F.pfm]]
  *                 [--polygon-offset FACTOR,UNITS [--offset-clamp C]]
  *
@@ -16,10 +16,14 @@
  * the face's index. The GPU clips, divides, snaps and fills; the fragment
  * shader writes face + 1 as 24-bit RGB, which is --id-out exactly.
  *
- *   standard   z_w = (z_c / w_c + 1) / 2 (OpenGL's default), cleared to 1, LESS
+ *   standard   glClipControl(.., GL_ZERO_TO_ONE) and z_c = f (w_c - n) / (f - n),
+ *              so z_w = f/(f-n) (1 - n/d), as the lessons, Direct3D and Vulkan
+ *              map it; cleared to 1, LESS
  *   reversed   glClipControl(.., GL_ZERO_TO_ONE) and z_c = n (f - w_c) / (f - n),
  *              so z_w = n/(f-n) (f/d - 1) (exactly n/d when --far inf),
  *              cleared to 0, GREATER
+ *   gl         OpenGL's default: z_w = (z_c / w_c + 1) / 2 with gluPerspective's
+ *              z_c; the same z_w on paper, less precise in float (lesson 06)
  * Either way a tie keeps the fragment drawn first, as in the lessons.
  *
  * Rows: the lessons' screen has y down with row 0 at the top. OpenGL's window
@@ -62,7 +66,7 @@ enum { FLAG_FORMAT, FLAG_MAPPING, FLAG_ORIENT, FLAG_REPEAT, FLAG_SNAP, FLAG_AGRE
 static const LessonFlag FLAGS[N_FLAGS] = {
     [FLAG_FORMAT] = {"--depth-format", "FMT", "unorm16, unorm24 (default) or float32"},
     [FLAG_MAPPING] = {"--depth-mapping", "MAP",
-                      "standard (1 at far, default) or reversed (1 at near; --far inf allowed)"},
+                      "standard (1 at far, default), reversed (1 at near; --far inf allowed) or gl ([-1, 1])"},
     [FLAG_ORIENT] = {"--orientation", "HOW",
                      "flip-y (default), upper-left, both or rows: how y-down rows reach the GPU"},
     [FLAG_REPEAT] = {"--repeat", "N", "draw N times (1 to 10000) and print the time of one draw"},
@@ -107,7 +111,7 @@ static bool read_gpu_options(const Options *o, GpuOptions *g, Error *err)
     if (x[FLAG_FORMAT] && (f = pick("--depth-format", x[FLAG_FORMAT], FORMAT_NAMES, 3, err)) < 0)
         return false;
     if (x[FLAG_MAPPING] &&
-        (m = pick("--depth-mapping", x[FLAG_MAPPING], MAPPING_NAMES, 2, err)) < 0)
+        (m = pick("--depth-mapping", x[FLAG_MAPPING], MAPPING_NAMES, 3, err)) < 0)
         return false;
     if (x[FLAG_ORIENT] && (r = pick("--orientation", x[FLAG_ORIENT], ORIENT_NAMES, 4, err)) < 0)
         return false;
@@ -175,7 +179,7 @@ static double snapped(double c, double w, int side, bool down)
     return (down ? 1 - 2 * q / side : 2 * q / side - 1) * w;
 }
 
-/* Every triangle of every face, in mesh order. Reversed: z_c from w_c = d. */
+/* Every triangle of every face, in mesh order; z_c from w_c = d but for gl. */
 static bool make_vertices(const Render *r, const GpuOptions *g, Vertices *v, Error *err)
 {
     const Mesh *m = &r->mesh;
@@ -198,6 +202,8 @@ static bool make_vertices(const Render *r, const GpuOptions *g, Vertices *v, Err
                 }
                 if (g->setup.mapping == MAP_REVERSED)
                     z = g->far_inf ? n : n * (f - p.w) / (f - n);
+                else if (g->setup.mapping == MAP_STANDARD)
+                    z = f * (p.w - n) / (f - n);
                 bool flip = g->setup.orient == ORIENT_FLIP_Y || g->setup.orient == ORIENT_BOTH;
                 v->pos[4 * k + 0] = (float)p.x;
                 v->pos[4 * k + 1] = (float)(flip ? -p.y : p.y);

@@ -5,6 +5,7 @@
 #include <math.h>
 
 #include "clip.h"
+#include "guard_band.h"
 #include "scanline.h"
 
 #define UNORM16_MAX 65535.0    /* 2^16 - 1: the code of z_w = 1 */
@@ -13,7 +14,7 @@
 /* Both mappings as z_w = a + b/d, from the formulas of depth_format.h. */
 DepthSetup depth_setup(DepthFormat format, DepthMapping mapping, double near, double far)
 {
-    DepthSetup s = {format, mapping, near, far, 0, 0};
+    DepthSetup s = {.format = format, .mapping = mapping, .near = near, .far = far};
     /* SOLUTION BEGIN: a and b of each mapping; reversed with far = inf is n/d. */
     if (mapping == STANDARD) {
         s.a = far / (far - near); /* f/(f-n) (1 - n/d) */
@@ -47,15 +48,16 @@ static double unorm_max(DepthFormat format)
 }
 
 /* What the buffer stores for z_w: for a unorm format the integer code, z_w
- * clamped to [0, 1] (as a GPU clamps) times 2^bits - 1, rounded to nearest
- * (exact in a float: every code is below 2^24); for float32, z_w itself. */
+ * clamped to [0, 1] (as a GPU clamps) times 2^bits - 1 in float32, rounded to
+ * the nearest code (a tie to even, as rintf rounds); every code is below 2^24,
+ * so a float holds it exactly. For float32, z_w itself. */
 float encode_depth(DepthFormat format, float z_w)
 {
     /* SOLUTION BEGIN: the code of z_w, or z_w itself for float32. */
     if (format == FLOAT32)
         return z_w;
-    double z = z_w < 0 ? 0.0 : z_w > 1 ? 1.0 : (double)z_w;
-    return (float)floor(z * unorm_max(format) + 0.5);
+    float z = z_w < 0 ? 0.0f : z_w > 1 ? 1.0f : z_w;
+    return rintf(z * (float)unorm_max(format));
     /* SOLUTION STUB
     (void)format;
     return z_w;
@@ -86,6 +88,73 @@ double depth_step(const DepthSetup *s, double d)
     return depth_quantum(s->format, window_depth(s, d)) * d * d / fabs(s->b);
 }
 
+/* A triangle's plane of z_w as a GPU sets it up, all in float32: the corners'
+ * z_w = z_c (1 / w_c), z_c = a w_c + b and w_c handed on as floats; then the
+ * plane through (x, y, z_w), from the centre of pixel (0, 0). A triangle
+ * clockwise in OpenGL's window (y up) starts at corner 1, as in llvmpipe. */
+DepthPlane depth_plane(const DepthSetup *s, const ScreenVertex v[3])
+{
+    double turn = (v[1].x - v[0].x) * (v[2].y - v[0].y) - (v[2].x - v[0].x) * (v[1].y - v[0].y);
+    const int *order = turn < 0 ? (const int[3]){1, 0, 2} : (const int[3]){0, 1, 2};
+    float x[3], y[3], z[3];
+    for (int k = 0; k < 3; k++) {
+        const ScreenVertex *c = &v[order[k]];
+        x[k] = (float)c->x;
+        y[k] = (float)c->y;
+        z[k] = (float)(s->a * c->d + s->b) * (1.0f / (float)c->d);
+    }
+    DepthPlane p = {z[0], 0, 0};
+    float dx01 = x[0] - x[1], dy01 = y[0] - y[1], dz01 = z[0] - z[1];
+    float dx20 = x[2] - x[0], dy20 = y[2] - y[0], dz20 = z[2] - z[0];
+    float area = dx01 * dy20 - dx20 * dy01;
+    if (area == 0)
+        return p; /* no pixel centre inside */
+    /* SOLUTION BEGIN: the slopes from dz01 = gx dx01 + gy dy01 and
+     * dz20 = gx dx20 + gy dy20, then the plane's value at (0.5, 0.5). */
+    float inv_area = 1.0f / area;
+    p.gx = dz01 * (dy20 * inv_area) - dz20 * (dy01 * inv_area);
+    p.gy = dz20 * (dx01 * inv_area) - dz01 * (dx20 * inv_area);
+    p.a0 = z[0] - (p.gx * (x[0] - 0.5f) + p.gy * (y[0] - 0.5f));
+    /* SOLUTION STUB
+    (void)dz01; (void)dz20;
+    */
+    /* SOLUTION END */
+    return p;
+}
+
+/* The triangle as the GPU sets it up: clipped at near and far (clip.c),
+ * divided onto the screen and clipped to the guard band (guard_band.h); its
+ * plane then from its first three corners (any three give the same plane). */
+static void triangle_plane(Target *t, const ScreenFace *tri)
+{
+    Vec4 kept[CLIP_MAX_OUT(3)];
+    ScreenVertex on[CLIP_MAX_OUT(3)], v[GUARD_BAND_MAX_OUT(CLIP_MAX_OUT(3))];
+    int n = tri->clip ? clip_polygon(tri->clip, 3, kept) : 3;
+    for (int k = 0; k < n; k++)
+        on[k] = tri->clip ? clip_to_screen(kept[k], t->width, t->height) : tri->v[k];
+    if (guard_band_clip(on, n, t->width, t->height, LINEAR_INV_D, v) >= 3)
+        t->depth_setup->plane = depth_plane(t->depth_setup, v);
+}
+
+/* A face, triangle by triangle as a GPU draws it: each its own plane of z_w,
+ * then drawn (clipped, divided, scanned) as lesson 05 draws a face. */
+void draw_triangles(Target *t, const ScreenFace *f, const DrawContext *ctx)
+{
+    for (int k = 0; k < f->n - 2; k++) {
+        const int *c = f->tris[k].c;
+        ScreenVertex v[3] = {f->v[c[0]], f->v[c[1]], f->v[c[2]]};
+        Vec4 clip[3];
+        ScreenFace tri = screen_triangle(v, f->face);
+        if (f->clip) {
+            for (int j = 0; j < 3; j++)
+                clip[j] = f->clip[c[j]];
+            tri.clip = clip;
+        }
+        triangle_plane(t, &tri);
+        draw_clipped_face(t, &tri, ctx);
+    }
+}
+
 /* The far plane everywhere, nothing drawn: 1 (standard) or 0 (reversed). */
 static float cleared(const DepthSetup *s)
 {
@@ -103,14 +172,16 @@ void clear_depth(Target *t)
     }
 }
 
-/* The depth test of one fragment at pixel i. The scanline hands it the
- * fragment's 1/d (stepped in double, rounded to float); z_w = a + b/d is
- * computed in double and rounded to float32, as a GPU's interpolator hands
- * the depth test a float; then it is stored in the buffer's format. */
+/* The depth test of one fragment at pixel i = y width + x. Its z_w is the
+ * triangle's plane at the pixel centre (plus the offset, lesson 07's), in
+ * float32 as a GPU evaluates it, not the scanline's 1/d; then it is stored
+ * in the buffer's format. */
 inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 {
     const DepthSetup *s = t->depth_setup;
-    float z_w = (float)(s->a + s->b * inv_d);
+    float x = (float)(i % (size_t)t->width), y = (float)(i / (size_t)t->width);
+    float z_w = s->plane.a0 + s->plane.gx * x + s->plane.gy * y + s->offset;
+    (void)inv_d;
     float value = encode_depth(s->format, z_w), stored = t->depth[i];
     /* SOLUTION BEGIN: does the fragment win pixel i? Which way is nearer
      * depends on the mapping; a tie keeps the fragment drawn first. */
@@ -130,13 +201,13 @@ inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 }
 
 /* A stored value back as view depth d (--depth-out, --shade depth). */
-static double stored_to_depth(const Target *t, float stored)
+double stored_to_depth(const Target *t, float stored)
 {
     const DepthSetup *s = t->depth_setup;
     return stored == cleared(s) ? INFINITY : view_depth(s, decode_depth(s->format, stored));
 }
 
 const Rasterizer DEPTH_PRECISION_ZBUFFER = {
-    .clear = clear_depth, .draw_face = draw_clipped_face, .stored_to_depth = stored_to_depth,
+    .clear = clear_depth, .draw_face = draw_triangles, .stored_to_depth = stored_to_depth,
     .clips = true,
 };

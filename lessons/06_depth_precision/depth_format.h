@@ -10,9 +10,11 @@
  *   cleared to     1 (standard) or 0 (reversed): the far plane
  *   a fragment     wins when its value < stored (standard), > stored
  *                  (reversed); a tie keeps the first one drawn
- * Both mappings are z_w = a + b/d, affine in 1/d: lesson 04's scanline
- * steps 1/d, and depth_test maps each fragment's 1/d to z_w. The target
- * carries its buffer's setup (Target.depth_setup), set before clear_depth. */
+ * Both mappings are z_w = a + b/d, affine in 1/d, so affine on the screen.
+ * In the precision a GPU uses, all float32: each corner's z_w = z_c / w_c
+ * (z_c = a w_c + b, w_c = d), then each triangle's plane of z_w, evaluated
+ * at every pixel centre the scanline covers. The target carries its buffer's
+ * setup (Target.depth_setup), set before clear_depth. */
 #ifndef DEPTH_FORMAT_H
 #define DEPTH_FORMAT_H
 
@@ -23,11 +25,19 @@
 typedef enum { UNORM16, UNORM24, FLOAT32 } DepthFormat;
 typedef enum { STANDARD, REVERSED } DepthMapping;
 
+/* A triangle's z_w on the screen, as a GPU sets it up, in float32:
+ * z_w = a0 + gx x + gy y at the centre of pixel (x, y). */
+typedef struct {
+    float a0, gx, gy;
+} DepthPlane;
+
 typedef struct DepthSetup {
     DepthFormat format;
     DepthMapping mapping;
     double near, far; /* far may be INFINITY with REVERSED */
     double a, b;      /* z_w = a + b / d */
+    DepthPlane plane; /* of the triangle being drawn */
+    float offset;     /* added to its z_w: 0 (lesson 07's depth bias) */
 } DepthSetup;
 
 /* The steps, in the order depth_buffer.c takes them (each is explained there). */
@@ -38,9 +48,12 @@ float encode_depth(DepthFormat format, float z_w);   /* what the buffer stores *
 double decode_depth(DepthFormat format, float stored);
 double depth_quantum(DepthFormat format, double z_w); /* one step of z_w there */
 double depth_step(const DepthSetup *s, double d);     /* ... and of d, in world units */
+DepthPlane depth_plane(const DepthSetup *s, const ScreenVertex v[3]); /* a triangle's */
+void draw_triangles(Target *t, const ScreenFace *f, const DrawContext *ctx); /* each with its plane */
+double stored_to_depth(const Target *t, float stored); /* a stored value back as d */
 
-/* clear_depth, then every face clipped (clip.c) and drawn by lesson 04's
- * scanline into the buffer of z_w. */
+/* clear_depth, then every triangle clipped (clip.c) and drawn by lesson 04's
+ * scanline into the buffer of z_w, its depth from its plane. */
 extern const Rasterizer DEPTH_PRECISION_ZBUFFER;
 
 #endif

@@ -1,40 +1,28 @@
 /* depth_bias.c: lesson 07, depth bias (polygon offset), step by step
  * (depth_format.h, docs/07_depth_bias.md). A decal and its base have the same
- * z_w, each stepped from its own corners and rounded on its own: either can
- * come out nearer. So every fragment of the decal moves by o toward the camera. */
+ * z_w on paper, but each triangle's plane is set up from its own corners and
+ * rounded on its own (lesson 06): either can come out nearer. So every
+ * fragment of the decal moves by o toward the camera. */
 #include "depth_format.h"
 
 #include <math.h>
 
 #include "clip.h"
+#include "scanline.h"
 
-/* m: the steepest slope of z_w on the screen. 1/d is affine on the screen for
- * a flat face, so z_w = a + b/d is a plane z_w = z_0 + g_x (x - x_0) + g_y (y - y_0),
- * solved from the fan triangle of largest area. m = max(|g_x|, |g_y|), as
- * OpenGL and Vulkan allow in place of sqrt(g_x^2 + g_y^2), and GPUs do. */
-double depth_slope(const DepthSetup *s, const ScreenVertex *v, int n)
+
+/* m: the steepest slope of z_w on the screen. Over a triangle z_w is the
+ * plane z_w = a0 + gx x + gy y (lesson 06), so m = max(|gx|, |gy|), as OpenGL
+ * and Vulkan allow in place of sqrt(gx^2 + gy^2), and GPUs do. */
+double depth_slope(const DepthPlane *p)
 {
-    double m = 0, largest = 0;
-    double z0 = window_depth(s, v[0].d);
-    for (int k = 1; k + 1 < n; k++) {
-        double x1 = v[k].x - v[0].x, y1 = v[k].y - v[0].y;
-        double x2 = v[k + 1].x - v[0].x, y2 = v[k + 1].y - v[0].y;
-        double z1 = window_depth(s, v[k].d) - z0, z2 = window_depth(s, v[k + 1].d) - z0;
-        double area = x1 * y2 - x2 * y1; /* twice the triangle's signed area */
-        if (!(fabs(area) > largest))
-            continue;
-        largest = fabs(area);
-        /* SOLUTION BEGIN: g_x and g_y from z1 = g_x x1 + g_y y1 and
-         * z2 = g_x x2 + g_y y2 (two equations, two unknowns), then m. */
-        double gx = (z1 * y2 - z2 * y1) / area;
-        double gy = (x1 * z2 - x2 * z1) / area;
-        m = fmax(fabs(gx), fabs(gy));
-        /* SOLUTION STUB
-        (void)z1; (void)z2;
-        */
-        /* SOLUTION END */
-    }
-    return m;
+    /* SOLUTION BEGIN: the larger of the plane's two slopes, in size. */
+    return fmax(fabs((double)p->gx), fabs((double)p->gy));
+    /* SOLUTION STUB
+    (void)p;
+    return 0.0;
+    */
+    /* SOLUTION END */
 }
 
 /* r: the smallest difference of z_w the format resolves on this face: unorm n
@@ -69,27 +57,36 @@ double polygon_offset(const DepthBias *bias, double m, double r)
     /* SOLUTION END */
 }
 
-/* The face as the GPU sets it up: clipped at near and far (clip.c) and divided
- * onto the screen (none for a face made on the screen or of over CLIP_MAX_IN corners). */
+/* The face's corners on the screen, as its triangles are set up: clipped at
+ * near and far (clip.c) and divided, or as they are for a face made there. */
 static int face_on_screen(const Target *t, const ScreenFace *f, ScreenVertex *v)
 {
     Vec4 kept[CLIP_MAX_OUT(CLIP_MAX_IN)];
-    int n = f->clip && f->n <= CLIP_MAX_IN ? clip_polygon(f->clip, f->n, kept) : 0;
-    for (int k = 0; k < n; k++)
-        v[k] = clip_to_screen(kept[k], t->width, t->height);
-    return n;
+    int n = !f->clip ? f->n : f->n <= CLIP_MAX_IN ? clip_polygon(f->clip, f->n, kept) : 0;
+    for (int k = 0; k < n && n <= CLIP_MAX_OUT(CLIP_MAX_IN); k++)
+        v[k] = f->clip ? clip_to_screen(kept[k], t->width, t->height) : f->v[k];
+    return n <= CLIP_MAX_OUT(CLIP_MAX_IN) ? n : 0;
 }
 
-/* One face: a decal is drawn with its o, every other face with o = 0,
- * exactly as lesson 06 draws it. */
-void draw_biased_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+/* One face: a decal is drawn with its o, m from its plane (its triangles lie
+ * in one) and r from its corners; any other face with o = 0, exactly as
+ * lesson 06 draws it. */
+static void draw_biased_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
 {
     DepthSetup *s = t->depth_setup;
     ScreenVertex v[CLIP_MAX_OUT(CLIP_MAX_IN)];
     int n;
     if (s->bias.mesh && mesh_face_in(s->bias.mesh, f->face, "decal") &&
-        (n = face_on_screen(t, f, v)) >= 3)
-        s->offset = polygon_offset(&s->bias, depth_slope(s, v, n), resolvable_difference(s, v, n));
-    draw_clipped_face(t, f, ctx);
+        (n = face_on_screen(t, f, v)) >= 3) {
+        DepthPlane p = depth_plane(s, v);
+        s->offset = (float)polygon_offset(&s->bias, depth_slope(&p),
+                                          resolvable_difference(s, v, n));
+    }
+    draw_triangles(t, f, ctx);
     s->offset = 0;
 }
+
+const Rasterizer DEPTH_BIAS_ZBUFFER = {
+    .clear = clear_depth, .draw_face = draw_biased_face, .stored_to_depth = stored_to_depth,
+    .clips = true,
+};

@@ -10,11 +10,14 @@
  *   cleared to     1 (standard) or 0 (reversed): the far plane
  *   a fragment     wins when its value < stored (standard), > stored
  *                  (reversed); a tie keeps the first one drawn
- * Both mappings are z_w = a + b/d, affine in 1/d: lesson 04's scanline
- * steps 1/d, and depth_test maps each fragment's 1/d to z_w. The target
- * carries its buffer's setup (Target.depth_setup), set before clear_depth.
+ * Both mappings are z_w = a + b/d, affine in 1/d, so affine on the screen.
+ * In the precision a GPU uses, all float32: each corner's z_w = z_c / w_c
+ * (z_c = a w_c + b, w_c = d), then each triangle's plane of z_w, evaluated
+ * at every pixel centre the scanline covers. The target carries its buffer's
+ * setup (Target.depth_setup), set before clear_depth.
  * Lesson 07 (docs/07_depth_bias.md): a face in `decal` adds o = m FACTOR +
- * r UNITS to z_w, m its steepest slope on the screen, r one step of the format. */
+ * r UNITS to z_w, m its steepest slope on the screen, r one step of the
+ * format there. */
 #ifndef DEPTH_FORMAT_H
 #define DEPTH_FORMAT_H
 
@@ -24,6 +27,12 @@
 
 typedef enum { UNORM16, UNORM24, FLOAT32 } DepthFormat;
 typedef enum { STANDARD, REVERSED } DepthMapping;
+
+/* A triangle's z_w on the screen, as a GPU sets it up, in float32:
+ * z_w = a0 + gx x + gy y at the centre of pixel (x, y). */
+typedef struct {
+    float a0, gx, gy;
+} DepthPlane;
 
 typedef struct {
     double factor, units, clamp; /* --polygon-offset FACTOR,UNITS, --offset-clamp */
@@ -35,8 +44,9 @@ typedef struct DepthSetup {
     DepthMapping mapping;
     double near, far; /* far may be INFINITY with REVERSED */
     double a, b;      /* z_w = a + b / d */
+    DepthPlane plane; /* of the triangle being drawn */
+    float offset;     /* added to its z_w: o on a decal, else 0 */
     DepthBias bias;
-    double offset; /* o of the face being drawn: 0 but on a decal */
 } DepthSetup;
 
 /* The steps, in the order depth_buffer.c takes them (each is explained there). */
@@ -47,14 +57,18 @@ float encode_depth(DepthFormat format, float z_w);   /* what the buffer stores *
 double decode_depth(DepthFormat format, float stored);
 double depth_quantum(DepthFormat format, double z_w); /* one step of z_w there */
 double depth_step(const DepthSetup *s, double d);     /* ... and of d, in world units */
-/* Lesson 07's steps (depth_bias.c): m, r and o of a face, and the face drawn. */
-double depth_slope(const DepthSetup *s, const ScreenVertex *v, int n);
+DepthPlane depth_plane(const DepthSetup *s, const ScreenVertex v[3]); /* a triangle's */
+void draw_triangles(Target *t, const ScreenFace *f, const DrawContext *ctx); /* each with its plane */
+double stored_to_depth(const Target *t, float stored); /* a stored value back as d */
+/* Lesson 07's steps (depth_bias.c): m, r and o of a face. */
+double depth_slope(const DepthPlane *p);
 double resolvable_difference(const DepthSetup *s, const ScreenVertex *v, int n);
 double polygon_offset(const DepthBias *bias, double m, double r);
-void draw_biased_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
 
-/* clear_depth, then every face clipped (clip.c) and drawn by lesson 04's
- * scanline into the buffer of z_w. */
+/* clear_depth, then every triangle clipped (clip.c) and drawn by lesson 04's
+ * scanline into the buffer of z_w, its depth from its plane. */
 extern const Rasterizer DEPTH_PRECISION_ZBUFFER;
+/* The same, but a face in `decal` drawn with its o (depth_bias.c). */
+extern const Rasterizer DEPTH_BIAS_ZBUFFER;
 
 #endif

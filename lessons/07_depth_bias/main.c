@@ -30,7 +30,7 @@ static const Lesson LESSON = {
     .purpose = "Lesson 07: z-fighting between coplanar faces, and the depth bias (polygon "
                "offset) on the faces in `decal` that ends it.",
     .scene = "decals",
-    .rasterizer = &DEPTH_PRECISION_ZBUFFER, /* with lesson 07's draw_biased_face */
+    .rasterizer = &DEPTH_BIAS_ZBUFFER,
     .depth_rule = {"depth buffer", "z_w", "face", SMALLER_IS_NEARER}, /* reversed: extras */
     .extras = &EXTRAS,
     .report = print_depth_steps,

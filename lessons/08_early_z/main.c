@@ -24,7 +24,7 @@ static const Lesson LESSON = {
     .purpose = "Lesson 08: early-Z and the depth pre-pass: the fragment shader runs once per "
                "covered pixel, not once per fragment.",
     .scene = "crowd",
-    .rasterizer = &DEPTH_PRECISION_ZBUFFER, /* with lesson 07's draw_biased_face */
+    .rasterizer = &DEPTH_BIAS_ZBUFFER,
     .depth_rule = {"depth buffer", "z_w", "face", SMALLER_IS_NEARER}, /* unorm24, standard */
     .extras = &EXTRAS,
     .report = print_shading,

@@ -136,10 +136,30 @@ static Target one_pixel(void)
     return t;
 }
 
-/* 1/d of the fragment for depth_test: 1 / d as the scanline hands it. */
-static float inv(double d)
+/* A fragment at view depth d: the plane of a triangle facing the camera at
+ * d set up (as draw_face sets it up before the scanline), and its 1/d as the
+ * scanline hands it to depth_test. */
+static float at(DepthSetup *s, double d)
 {
+    ScreenVertex v[3] = {{0, 0, d}, {4, 0, d}, {0, 4, d}};
+    s->plane = depth_plane(s, v);
     return (float)(1.0 / d);
+}
+
+/* A tilted triangle, z_w = n/d (reversed, far = inf, n = 0.1) at its corners
+ * (0, 0, d = 1), (8, 0, d = 2), (0, 8, d = 4): z_w = 0.1, 0.05, 0.025, so
+ * gx = -0.05 / 8 = -0.00625, gy = -0.075 / 8 = -0.009375 per pixel, and at the
+ * centre of pixel (0, 0), half a pixel right and down of corner 0:
+ * a0 = 0.1 + 0.5 gx + 0.5 gy = 0.0921875. */
+static void a_triangle_plane_from_its_corners(void **state)
+{
+    (void)state;
+    DepthSetup s = depth_setup(FLOAT32, REVERSED, NEAR, INFINITY);
+    ScreenVertex v[3] = {{0, 0, 1}, {8, 0, 2}, {0, 8, 4}};
+    DepthPlane p = depth_plane(&s, v);
+    assert_true(fabs(p.gx - -0.00625) < 1e-8);   /* dz_w/dx */
+    assert_true(fabs(p.gy - -0.009375) < 1e-8);  /* dz_w/dy */
+    assert_true(fabs(p.a0 - 0.0921875) < 1e-8);  /* z_w at the centre of pixel (0, 0) */
 }
 
 static void standard_clears_to_one_and_keeps_the_smaller(void **state)
@@ -150,9 +170,9 @@ static void standard_clears_to_one_and_keeps_the_smaller(void **state)
     t.depth_setup = &s;
     clear_depth(&t);
     assert_true(t.depth[0] == 16777215.0f);
-    assert_true(depth_test(&t, 0, 0, inv(500)));  /* anything before far wins */
-    assert_true(depth_test(&t, 0, 1, inv(2)));    /* nearer wins */
-    assert_false(depth_test(&t, 0, 2, inv(3)));   /* farther loses */
+    assert_true(depth_test(&t, 0, 0, at(&s, 500)));  /* anything before far wins */
+    assert_true(depth_test(&t, 0, 1, at(&s, 2)));    /* nearer wins */
+    assert_false(depth_test(&t, 0, 2, at(&s, 3)));   /* farther loses */
     expect_count(1, t.face[0], "the nearest face");
     /* z_w(2) = 1000/999.9 (1 - 0.05) = 0.95009501, times 2^24 - 1: 15939948.2 */
     assert_true(t.depth[0] == 15939948.0f);
@@ -167,11 +187,11 @@ static void reversed_clears_to_zero_and_keeps_the_larger(void **state)
     t.depth_setup = &s;
     clear_depth(&t);
     assert_true(t.depth[0] == 0.0f);
-    assert_true(depth_test(&t, 0, 0, inv(1e6))); /* far = inf: a million away still wins */
-    assert_true(depth_test(&t, 0, 1, inv(4)));
-    assert_false(depth_test(&t, 0, 2, inv(8)));
+    assert_true(depth_test(&t, 0, 0, at(&s, 1e6))); /* far = inf: a million away still wins */
+    assert_true(depth_test(&t, 0, 1, at(&s, 4)));
+    assert_false(depth_test(&t, 0, 2, at(&s, 8)));
     expect_count(1, t.face[0], "the nearest face");
-    assert_true(t.depth[0] == (float)(0.1 * (double)inv(4))); /* z_w = n/d */
+    assert_true(t.depth[0] == 0.025f); /* z_w = n/d, 0.1 / 4 */
     target_free(&t);
 }
 
@@ -184,16 +204,16 @@ static void a_tie_keeps_the_first_fragment(void **state)
     t.depth_setup = &s;
     clear_depth(&t);
     /* At d = 100 one unorm16 code spans about 1.5 m: 100 and 100.05 tie. */
-    assert_true(depth_test(&t, 0, 7, inv(100.05)));
-    assert_false(depth_test(&t, 0, 8, inv(100)));
+    assert_true(depth_test(&t, 0, 7, at(&s, 100.05)));
+    assert_false(depth_test(&t, 0, 8, at(&s, 100)));
     expect_count(7, t.face[0], "the first face drawn");
     target_free(&t);
     s = depth_setup(FLOAT32, REVERSED, NEAR, FAR); /* there they are told apart */
     t = one_pixel();
     t.depth_setup = &s;
     clear_depth(&t);
-    assert_true(depth_test(&t, 0, 7, inv(100.05)));
-    assert_true(depth_test(&t, 0, 8, inv(100)));
+    assert_true(depth_test(&t, 0, 7, at(&s, 100.05)));
+    assert_true(depth_test(&t, 0, 8, at(&s, 100)));
     expect_count(8, t.face[0], "the nearer face");
     target_free(&t);
 }
@@ -204,6 +224,7 @@ int main(void)
         cmocka_unit_test(step_matches_brute_force_for_every_format_and_mapping),
         cmocka_unit_test(issue_figures_at_near_0_1_far_1000_d_100),
         cmocka_unit_test(encode_rounds_to_the_nearest_code),
+        cmocka_unit_test(a_triangle_plane_from_its_corners),
         cmocka_unit_test(standard_clears_to_one_and_keeps_the_smaller),
         cmocka_unit_test(reversed_clears_to_zero_and_keeps_the_larger),
         cmocka_unit_test(a_tie_keeps_the_first_fragment),

@@ -93,14 +93,16 @@ static void default_run_reports_steps_and_bands(void **state)
     expect_line(out, "  depth step (unorm24, standard, near 0.1, far 1000): d = 1: 5.96e-07, "
                      "d = 10: 5.96e-05, d = 100: 0.00596, d = 300: 0.0536\n");
     expect_line(out, "  back plate wins (gap 0.05): d = 1: 0.000, d = 3: 0.000, d = 10: 0.000, "
-                     "d = 30: 0.000, d = 100: 0.000, d = 300: 0.065\n");
+                     "d = 30: 0.000, d = 100: 0.000, d = 300: 0.572\n");
     free(out);
 }
 
 /* Lesson 05's picture, face for face, at float32 (reversed) on every other
  * built-in scene at 320 x 240: measured, not one pixel differs. Their faces
  * are far apart for float32 z_w; a pixel could change only where two faces
- * store the same float32 z_w and lesson 05's float 1/d tells them apart. */
+ * store the same float32 z_w and lesson 05's float 1/d tells them apart.
+ * Not `decals`: its decals lie on their walls, the same depth, and a GPU's
+ * float32 planes make them fight (lesson 07); lesson 05's exact 1/d ties. */
 static void float32_agrees_with_lesson_05_on_the_built_in_scenes(void **state)
 {
     (void)state;
@@ -108,7 +110,7 @@ static void float32_agrees_with_lesson_05_on_the_built_in_scenes(void **state)
     long differing_total = 0;
     for (int i = 0; i < scene_count(); i++) {
         const char *name = scene_at(i)->name;
-        if (strcmp(name, "ladder") == 0)
+        if (strcmp(name, "ladder") == 0 || scene_at(i)->coplanar)
             continue;
         Path a = in_dir(dir, "l05.png"), b = in_dir(dir, "l06.png"), o = in_dir(dir, "x.png");
         const char *args5[] = {"--scene", name, "--width", "320", "--height", "240", "--out",

@@ -32,13 +32,28 @@ static void expect_close(double expected, double actual, const char *what)
         fail_msg("%s: expected %.12g, got %.12g", what, expected, actual);
 }
 
+/* m of a triangle: lesson 06's plane of z_w, set up from its corners in
+ * float32, then depth_slope. */
+static double m_of(const DepthSetup *s, ScreenVertex a, ScreenVertex b, ScreenVertex c)
+{
+    DepthPlane p = depth_plane(s, (ScreenVertex[3]){a, b, c});
+    return depth_slope(&p);
+}
+
+/* The plane is worked out in float32: a slope on paper holds to 1e-4 of itself. */
+static void expect_float_close(double expected, double actual, const char *what)
+{
+    if (!(fabs(actual - expected) <= 1e-4 * fabs(expected)))
+        fail_msg("%s: expected %.9g, got %.9g", what, expected, actual);
+}
+
 /* A face at one depth, d = 10 everywhere: z_w does not change across it. */
 static void facing_face_has_no_slope(void **state)
 {
     (void)state;
     DepthSetup s = depth_setup(UNORM24, STANDARD, NEAR, FAR);
-    ScreenVertex v[4] = {{10, 10, 10}, {90, 10, 10}, {90, 70, 10}, {10, 70, 10}};
-    expect_close(0, depth_slope(&s, v, 4), "m of a face facing the camera");
+    ScreenVertex a = {10, 10, 10}, b = {90, 10, 10}, c = {90, 70, 10};
+    expect_close(0, m_of(&s, a, b, c), "m of a face facing the camera");
 }
 
 /* Grazing faces: d goes from 2 to 4 across them. Corners (0,0) d 2, (100,0)
@@ -50,17 +65,19 @@ static void grazing_face_slope_is_the_larger_of_the_two(void **state)
 {
     (void)state;
     DepthSetup s = depth_setup(UNORM24, STANDARD, NEAR, FAR);
-    ScreenVertex along_x[3] = {{0, 0, 2}, {100, 0, 4}, {0, 100, 2}};
-    expect_close(-B / 400, depth_slope(&s, along_x, 3), "m, z_w changing along x");
-    ScreenVertex both[3] = {{0, 0, 2}, {100, 0, 4}, {0, 50, 4}};
-    expect_close(-B / 200, depth_slope(&s, both, 3), "m, the larger slope (along y)");
-    /* The same plane as a quad: 1/d is affine on the screen, 1/2 - x/400 -
-     * y/200, so at (50, 25) 1/d = 1/2 - 1/8 - 1/8 = 1/4, d = 4. */
-    ScreenVertex quad[4] = {{0, 0, 2}, {100, 0, 4}, {50, 25, 4}, {0, 50, 4}};
-    expect_close(-B / 200, depth_slope(&s, quad, 4), "m of a quad, the same plane");
+    ScreenVertex o = {0, 0, 2}, x4 = {100, 0, 4};
+    expect_float_close(-B / 400, m_of(&s, o, x4, (ScreenVertex){0, 100, 2}),
+                       "m, z_w changing along x");
+    ScreenVertex y4 = {0, 50, 4};
+    expect_float_close(-B / 200, m_of(&s, o, x4, y4), "m, the larger slope (along y)");
+    /* The same plane as a quad's two triangles: 1/d is affine on the screen,
+     * 1/2 - x/400 - y/200, so at (50, 25) 1/d = 1/2 - 1/8 - 1/8 = 1/4, d = 4. */
+    ScreenVertex mid = {50, 25, 4};
+    expect_float_close(-B / 200, m_of(&s, o, x4, mid), "m of a quad's first triangle");
+    expect_float_close(-B / 200, m_of(&s, o, mid, y4), "m of its second");
     /* The format does not change m: it is a slope of z_w itself. */
     s = depth_setup(FLOAT32, STANDARD, NEAR, FAR);
-    expect_close(-B / 200, depth_slope(&s, both, 3), "m at float32");
+    expect_float_close(-B / 200, m_of(&s, o, x4, y4), "m at float32");
 }
 
 /* r: unorm, one code whatever the face; float32, one step of the float at
@@ -122,11 +139,12 @@ static void offset_moves_the_decal_in_front_of_its_base(void **state)
     (void)state;
     DepthSetup s = depth_setup(UNORM24, STANDARD, NEAR, FAR);
     float inv_d = (float)(1.0 / 7.0);
+    s.plane = depth_plane(&s, (ScreenVertex[3]){{0, 0, 7}, {4, 0, 7}, {0, 4, 7}});
     Target t = one_pixel(&s);
     assert_true(depth_test(&t, 0, 0, inv_d));
     assert_false(depth_test(&t, 0, 1, inv_d));
     expect_count(0, t.face[0], "without bias: the base, drawn first");
-    s.offset = -1 / 16777215.0;
+    s.offset = -1 / 16777215.0f;
     assert_true(depth_test(&t, 0, 1, inv_d));
     expect_count(1, t.face[0], "with o = -1 code: the decal");
     target_free(&t);

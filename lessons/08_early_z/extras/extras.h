@@ -22,7 +22,7 @@ Rgb shade_fragment(Rgb lit, int x, int y);
 /* order[0 .. nfaces-1]: mesh order, or by the mean view depth d of each face's
  * corners, nearest first (front-to-back) or last (back-to-front). */
 void sort_faces(const Render *r, SortOrder sort, int *order);
-/* Lesson 07's draw_biased_face, each fragment it made handed to fragment(). */
+/* Lesson 07's DEPTH_BIAS_ZBUFFER draws a face, each fragment it made handed to fragment(). */
 void draw_shaded_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
 bool early_z_begin(EarlyZ *z, Run *run, Error *err); /* the run draws through z */
 void early_z_free(EarlyZ *z);

@@ -1,6 +1,6 @@
 /* fragments.c: lesson 08's plumbing, shown but not taught: the order of
  * --sort (a qsort by each face's mean d), and the fragments. Lesson 07's
- * draw_biased_face tests and writes each fragment of a face itself; to run
+ * rasterizer (DEPTH_BIAS_ZBUFFER) tests and writes each fragment of a face itself; to run
  * the shader per fragment around it, unchanged, the face's box of the
  * buffers is saved first, and each pixel whose count of tests went up is a
  * fragment of the face, handed to fragment() (early_z.c). */
@@ -75,7 +75,7 @@ void draw_shaded_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
         memcpy(z->saved_face + at, t->face + at, len * sizeof *t->face);
         memcpy(z->saved_tests + at, t->overdraw + at, len * sizeof *t->overdraw);
     }
-    draw_biased_face(t, f, ctx);
+    DEPTH_BIAS_ZBUFFER.draw_face(t, f, ctx); /* lesson 07 draws the face */
     bool cutout = mesh_face_in(z->mesh, f->face, "cutout");
     Rgb lit = face_flat_colour(z->mesh, z->camera, f->face);
     for (int y = b.y0; y < b.y1; y++)
