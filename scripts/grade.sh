@@ -207,23 +207,29 @@ for lesson in "$@"; do
     done
     # The runs: each listed test (and each test a program lists) alone, in
     # each program that lists it.
-    : >"$ldir/jobs"
-    { cut -f1 "$ldir/points"; cut -f1 "$ldir/where"; } | awk '!seen[$0]++' | while read -r name; do
-        if [ -n "$only_test" ] && [ "$name" != "$only_test" ]; then continue; fi
-        # (and in each program that listed nothing: it could not say)
-        bins=$(awk -F '\t' -v t="$name" 'FILENAME == ARGV[1] { if ($1 == t) print $2; listed[$2] = 1; next }
-                                          !($1 in listed) { print $1 }' "$ldir/where" "$ldir/bins")
-        for bin in $bins; do printf '%s %s\n' "$bin" "$name"; done
-    done >"$ldir/jobs"
+    # (and in each program that listed nothing: it could not say). One awk
+    # for all the names: "<binary> <test>" per run, names in the order of the
+    # points file then of the lists, binaries in the order of the lists.
+    awk -F '\t' -v only="$only_test" '
+        FILENAME == ARGV[1] { if (!($1 in seen)) { seen[$1] = 1; names[++n] = $1 }; next }
+        FILENAME == ARGV[2] { if (!($1 in seen)) { seen[$1] = 1; names[++n] = $1 }
+                              where[$1] = where[$1] " " $2; listed[$2] = 1; next }
+        !($1 in listed) { silent = silent " " $1 }
+        END {
+            for (i = 1; i <= n; i++) {
+                if (only != "" && names[i] != only) continue
+                k = split(where[names[i]] silent, bins, " ")
+                for (j = 1; j <= k; j++) printf "%s %s\n", bins[j], names[i]
+            }
+        }' "$ldir/points" "$ldir/where" "$ldir/bins" >"$ldir/jobs"
     mkdir -p "$ldir/run"
     # shellcheck disable=SC2016 # expanded by the inner sh
     [ -s "$ldir/jobs" ] && xargs -n 2 -P "$jobs" sh -c '
         bin=$1 name=$2
         out="$GRADE_LDIR/run/$bin.$name"
-        now=$(date +%s)
         lim=$GRADE_LIMIT
         if [ -n "$GRADE_DEADLINE" ]; then
-            left=$((GRADE_DEADLINE - now))
+            left=$((GRADE_DEADLINE - $(date +%s)))
             [ "$left" -lt "$lim" ] && lim=$left
         fi
         if [ "$lim" -le 0 ]; then
@@ -249,10 +255,10 @@ for lesson in "$@"; do
 
     # The verdicts: a test passes if a program that has it passed it.
     : >"$ldir/results"     # test <tab> pass|fail|crash <tab> binary
+    while read -r bin; do mkdir -p "$ldir/out/$bin"; done <"$ldir/bins"
     while read -r bin name; do
         read -r v st lim <"$ldir/run/$bin.$name.verdict" 2>/dev/null || { v=unfinished; st=127; lim=$limit; }
         log="$ldir/run/$bin.$name.log"
-        mkdir -p "$ldir/out/$bin"
         if grep -q "^$name	pass	" "$ldir/results"; then continue; fi
         # Bytes that are not plain text (and are not valid UTF-8 in JSON) as "?".
         LC_ALL=C tr -d '\000' <"$log" | LC_ALL=C tr '\200-\377' '?' >"$ldir/out/$bin/$name.out"

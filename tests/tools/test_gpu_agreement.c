@@ -211,23 +211,12 @@ static Agreement agreement(const char *dir, const char *lesson_id, const char *l
     return g;
 }
 
-/* Runs lesson and GPU (with snap: the lessons' snapped corners) on scene.
- * Returns false when the lesson drops a face at the near plane. */
-static bool measure(const char *lesson, const char *scene, bool snap, Agreement *out)
+/* The GPU's pictures of one scene (with snap: the lessons' corners snapped to
+ * 1/256 pixel) into dir: they do not depend on the lesson, so each scene is
+ * drawn once per snap and compared with every lesson. */
+static void gpu_pictures(const char *scene, bool snap, const char *dir)
 {
-    char name[128];
-    snprintf(name, sizeof name, "gpu_%s_%s%s", lesson, scene, snap ? "_snap" : "");
-    const char *dir = test_dir(name);
-    Path lid = in_dir(dir, "lesson_id.png"), ld = in_dir(dir, "lesson.pfm"),
-         lp = in_dir(dir, "lesson.png"), gid = in_dir(dir, "gpu_id.png"),
-         gd = in_dir(dir, "gpu.pfm");
-    const char *largs[] = {"--scene", scene, "--out", lp.path, "--id-out", lid.path,
-                           "--depth-out", ld.path, NULL};
-    char *summary = run_ok(lesson, largs);
-    bool whole = strstr(summary, " 0 dropped at the near plane") != NULL;
-    free(summary);
-    if (!whole && strcmp(lesson, "05_clipping") != 0)
-        return false;
+    Path gid = in_dir(dir, "gpu_id.png"), gd = in_dir(dir, "gpu.pfm");
     /* float32 with the reversed mapping and the far plane at infinity: z_w = n/d
      * in float, the GPU's most exact depth. */
     const char *gargs[] = {"--scene", scene, "--id-out", gid.path, "--depth-out", gd.path,
@@ -237,7 +226,30 @@ static bool measure(const char *lesson, const char *scene, bool snap, Agreement 
     if (r.status != 0)
         fail_msg(GPU " --scene %s: exit %d: %s", scene, r.status, r.err);
     run_result_free(&r);
+}
+
+/* Runs lesson on scene (once) and compares it with the GPU's pictures in
+ * gpu_dir and, given the snapped corners, in snap_dir. Returns false when the
+ * lesson drops a face at the near plane. */
+static bool measure(const char *lesson, const char *scene, const char *gpu_dir,
+                    const char *snap_dir, Agreement *out, Agreement *snapped)
+{
+    char name[128];
+    snprintf(name, sizeof name, "gpu_%s_%s", lesson, scene);
+    const char *dir = test_dir(name);
+    Path lid = in_dir(dir, "lesson_id.png"), ld = in_dir(dir, "lesson.pfm"),
+         lp = in_dir(dir, "lesson.png");
+    const char *largs[] = {"--scene", scene, "--out", lp.path, "--id-out", lid.path,
+                           "--depth-out", ld.path, NULL};
+    char *summary = run_ok(lesson, largs);
+    bool whole = strstr(summary, " 0 dropped at the near plane") != NULL;
+    free(summary);
+    if (!whole && strcmp(lesson, "05_clipping") != 0)
+        return false;
+    Path gid = in_dir(gpu_dir, "gpu_id.png"), gd = in_dir(gpu_dir, "gpu.pfm");
     *out = agreement(dir, lid.path, ld.path, gid.path, gd.path);
+    Path sid = in_dir(snap_dir, "gpu_id.png"), sd = in_dir(snap_dir, "gpu.pfm");
+    *snapped = agreement(dir, lid.path, ld.path, sid.path, sd.path);
     return true;
 }
 
@@ -283,15 +295,21 @@ static void lessons_agree_with_the_gpu(void **state)
                           "compared here\n", "every lesson", scene);
             continue;
         }
+        char name[128], gpu_dir[TEST_PATH_MAX], snap_dir[TEST_PATH_MAX];
+        snprintf(name, sizeof name, "gpu_%s", scene);
+        snprintf(gpu_dir, sizeof gpu_dir, "%s", test_dir(name));
+        snprintf(name, sizeof name, "gpu_%s_snap", scene);
+        snprintf(snap_dir, sizeof snap_dir, "%s", test_dir(name));
+        gpu_pictures(scene, false, gpu_dir);
+        gpu_pictures(scene, true, snap_dir);
         for (int l = 0; l < N_LESSONS; l++) {
             const char *lesson = LESSONS[l];
             Agreement a, snapped;
-            if (!measure(lesson, scene, false, &a)) {
+            if (!measure(lesson, scene, gpu_dir, snap_dir, &a, &snapped)) {
                 print_message("%-22s %-15s drops faces at the near plane: not compared\n",
                               lesson, scene);
                 continue;
             }
-            measure(lesson, scene, true, &snapped);
             bool triangles = l == 0; /* lesson 03 draws the GPU's triangles */
             print_message("%-22s %-15s %7ld covered, %.4f%% same face, %ld differ; depth "
                           "%.3g, %.3g given snapped corners%s\n",

@@ -51,10 +51,15 @@ static const char FAKE_C[] =
 static const char MAIN_C[] = "#include \"fake.h\"\nint main(void) { return fake_add(0, 0); }\n";
 
 /* The tests, in the order cmocka runs them. The abort kills the whole test
- * program, so make grade must run the three tests after it on their own. */
+ * program, so make grade must run the three tests after it on their own.
+ * hangs spins as a student's endless loop does, at the lowest priority
+ * (nice 19): the wall-clock time limit stops it all the same, and the tests
+ * that make test runs beside it keep the cores. */
 static const char TEST_FAKE_C[] =
+    "#define _XOPEN_SOURCE 700 /* nice() */\n"
     "#include <setjmp.h>\n#include <stdarg.h>\n#include <stddef.h>\n#include <stdint.h>\n"
-    "#include <cmocka.h>\n#include <signal.h>\n#include <stdlib.h>\n#include \"fake.h\"\n"
+    "#include <cmocka.h>\n#include <signal.h>\n#include <stdlib.h>\n#include <unistd.h>\n"
+    "#include \"fake.h\"\n"
     "static void adds_small_numbers(void **s) { (void)s; assert_int_equal(fake_add(2, 3), 5); }\n"
     "static void not_in_points_file(void **s) { (void)s; }\n"
     "static void message_with_quotes(void **s) { (void)s;\n"
@@ -62,7 +67,7 @@ static const char TEST_FAKE_C[] =
     "static void crash_caught_by_cmocka(void **s) { (void)s; raise(SIGSEGV); }\n"
     "static void aborts(void **s) { (void)s; abort(); }\n"
     "static void after_the_abort(void **s) { (void)s; assert_int_equal(fake_add(1, 1), 2); }\n"
-    "static void hangs(void **s) { (void)s; for (volatile int i = 0;; i++) {} }\n"
+    "static void hangs(void **s) { (void)s; (void)!nice(19); for (volatile int i = 0;; i++) {} }\n"
     "static void after_the_hang(void **s) { (void)s; assert_int_equal(fake_add(0, 0), 0); }\n"
     "int main(void) {\n"
     "    const struct CMUnitTest t[] = {cmocka_unit_test(adds_small_numbers),\n"
@@ -500,8 +505,12 @@ static void autograder_grades_the_submission_only_and_cannot_be_forged(void **st
     static const char BUGGY_C[] = "#include \"fake.h\"\nint fake_add(int a, int b) { return a - b; }\n";
     static const char CRASH_C[] = "#include \"fake.h\"\n#include <signal.h>\n"
                                   "int fake_add(int a, int b) { raise(SIGSEGV); return a + b; }\n";
-    static const char HANG_C[] = "#include \"fake.h\"\n"
-                                 "int fake_add(int a, int b) { for (volatile int i = 0;; i++) {} return a + b; }\n";
+    /* A submission that never returns: blocked for good rather than spinning,
+     * since the time limit is wall-clock time (tools/time_limit.c) and the
+     * spinning kind is the `hangs` test's; blocked, its four hangs leave the
+     * cores to the other tests of make test. */
+    static const char HANG_C[] = "#include \"fake.h\"\n#include <unistd.h>\n"
+                                 "int fake_add(int a, int b) { for (;;) pause(); return a + b; }\n";
     const char *correct[] = {"fake.c", FAKE_C, NULL};
     const char *buggy[] = {"fake.c", BUGGY_C, NULL};
     const char *crashing[] = {"fake.c", CRASH_C, NULL};
