@@ -44,10 +44,12 @@ double polygon_offset(const DepthBias *bias, double m, double r)
 static int face_on_screen(const Target *t, const ScreenFace *f, ScreenVertex *v)
 {
     Vec4 kept[CLIP_MAX_OUT(CLIP_MAX_IN)];
-    int n = !f->clip ? f->n : f->n <= CLIP_MAX_IN ? clip_polygon(f->clip, f->n, kept) : 0;
-    for (int k = 0; k < n && n <= CLIP_MAX_OUT(CLIP_MAX_IN); k++)
+    if (f->n > CLIP_MAX_IN)
+        return 0; /* none: a face of so many corners gets no bias */
+    int n = f->clip ? clip_polygon(f->clip, f->n, kept) : f->n;
+    for (int k = 0; k < n; k++)
         v[k] = f->clip ? clip_to_screen(kept[k], t->width, t->height) : f->v[k];
-    return n <= CLIP_MAX_OUT(CLIP_MAX_IN) ? n : 0;
+    return n;
 }
 
 /* One face: a decal is drawn with its o, m from its plane (its triangles lie
