@@ -323,7 +323,8 @@ BENCH_OPT     := -O2
 BENCH_CFLAGS   = $(CFLAGS) $(BENCH_OPT) $(REQUIRED_CFLAGS)
 # lesson=Rasterizer, for each lesson the benchmark times (if it exists).
 BENCH_TABLE   := 02_zbuffer=ZBUFFER 03_perspective_z=ZBUFFER \
-                 04_scanline_inverse_z=SCANLINE_ZBUFFER
+                 04_scanline_inverse_z=SCANLINE_ZBUFFER \
+                 08_early_z=DEPTH_BIAS_ZBUFFER 09_hierarchical_z=HIERARCHICAL_ZBUFFER
 BENCH_TABLE   := $(filter $(LESSONS:%=%=%),$(BENCH_TABLE))
 BENCH_LESSONS := $(foreach e,$(BENCH_TABLE),$(firstword $(subst =, ,$(e))))
 bench_rasterizer = $(lastword $(subst =, ,$(filter $(1)=%,$(BENCH_TABLE))))
@@ -351,8 +352,9 @@ $(BENCH_DIR)/obj/%.o: %.c | $(DEPS_OK)
 
 $(BENCH_DIR)/obj/bench_%.o: tests/bench/bench.c | $(DEPS_OK)
 	@mkdir -p $(@D)
-	$(CC) $(REQUIRED_CPPFLAGS) -Itests/bench $(CPPFLAGS) $(BENCH_CFLAGS) \
-	    -DBENCH_RASTERIZER=$(call bench_rasterizer,$*) -DBENCH_LESSON='"$*"' -MMD -MP -c $< -o $@
+	$(CC) $(REQUIRED_CPPFLAGS) -Itests/bench -Ilessons/$* $(CPPFLAGS) $(BENCH_CFLAGS) \
+	    -DBENCH_RASTERIZER=$(call bench_rasterizer,$*) -DBENCH_LESSON='"$*"' \
+	    -DBENCH_LESSON_NUMBER=$(patsubst 0%,%,$(firstword $(subst _, ,$*))) -MMD -MP -c $< -o $@
 
 $(BENCH_DIR)/obj/gpu/%.o: OBJ_INCLUDES += $(GL_CFLAGS)
 $(BENCH_DIR)/obj/gpu/bench_llvmpipe.o $(BENCH_DIR)/obj/gpu/gl.o: | $(GPU_DEPS_OK)

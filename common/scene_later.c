@@ -278,8 +278,8 @@ bool build_crowd(Mesh *m, Error *err)
  * right of it and above the buildings' roofs. Each small building is a closed
  * box on a 5-unit grid, from z = -30 back to z = -125, sunk 0.5 into the
  * ground (drawn second, after the large building), 3 x 3 and 2 to 9 high. */
-#define CITY_ROWS 20
-#define CITY_COLUMNS 30
+#define CITY_ROWS 30
+#define CITY_COLUMNS 17
 #define CITY_STEP 5.0
 #define CITY_COLOURS 5
 
@@ -297,8 +297,8 @@ bool build_city(Mesh *m, Error *err)
     for (int k = 0; ok && k < CITY_COLOURS; k++)
         ok = (colour[k] = mesh_add_material(m, NAMES[k], vec3(COLOURS[k][0], COLOURS[k][1],
                                                                COLOURS[k][2]), err)) >= 0;
-    ok = ok && add_aligned_box(m, vec3(-60, -1, -16), vec3(3, 45, -12), occluder, err) &&
-         add_quad(m, vec3(-90, 0, -8), vec3(90, 0, -8), vec3(90, 0, -140), vec3(-90, 0, -140),
+    ok = ok && add_quad(m, vec3(-60, -1, -12), vec3(6, -1, -12), vec3(6, 45, -12), vec3(-60, 45, -12), occluder, err) &&
+         add_quad(m, vec3(-90, 0, -8), vec3(90, 0, -8), vec3(90, 0, -190), vec3(-90, 0, -190),
                   ground, err);
     uint32_t rng = 1990;
     for (int i = 0; ok && i < CITY_ROWS * CITY_COLUMNS; i++) {

@@ -16,6 +16,16 @@
 #include "render.h"
 #include "workloads.h"
 
+/* Lessons 06 on keep their depth buffer in a format (Target.depth_setup):
+ * here unorm24 with the standard mapping, the buffer of lessons 08 and 09 and
+ * of llvmpipe's rows. Lesson 09 on add a tile buffer (Target.hiz), 8 x 8. */
+#if BENCH_LESSON_NUMBER >= 6
+#include "depth_format.h"
+#endif
+#if BENCH_LESSON_NUMBER >= 9
+#include "hierarchical_z.h"
+#endif
+
 #ifndef BENCH_RASTERIZER
 #error "compile with -DBENCH_RASTERIZER=<the lesson's Rasterizer>"
 #endif
@@ -30,8 +40,19 @@ static bool measure_workload(const Rasterizer *rz, const Workload *w, int reps,
                              Measurement *m, Error *err)
 {
     Target t;
-    if (!render_target_init(&t, rz, w->width, w->height, err))
+    if (!target_init(&t, w->width, w->height, err))
         return false;
+#if BENCH_LESSON_NUMBER >= 6
+    DepthSetup setup = depth_setup(UNORM24, STANDARD, w->ctx.near, w->ctx.far);
+    t.depth_setup = &setup;
+#endif
+#if BENCH_LESSON_NUMBER >= 9
+    HierarchicalZ hiz = {0};
+    if (!hiz_begin(&hiz, &t, 8, err)) {
+        target_free(&t);
+        return false;
+    }
+#endif
     double times[MAX_REPS];
     bool same = true;
     for (int k = -BENCH_WARMUP; k < reps; k++) {
@@ -49,6 +70,9 @@ static bool measure_workload(const Rasterizer *rz, const Workload *w, int reps,
         same = same && sum == m->checksum && t.stats.tested == m->fragments;
     }
     target_free(&t);
+#if BENCH_LESSON_NUMBER >= 9
+    hiz_free(&hiz);
+#endif
     if (!same)
         return error_set(err, "%s: repetitions of '%s' left different depth buffers",
                          BENCH_LESSON, w->name);

@@ -18,6 +18,7 @@ static const char *const NAMES[WORKLOAD_COUNT] = {
     [WORKLOAD_FILL_BACK_TO_FRONT] = "fill_back_to_front",
     [WORKLOAD_FILL_FRONT_TO_BACK] = "fill_front_to_back",
     [WORKLOAD_MESH] = "mesh",
+    [WORKLOAD_CITY] = "city",
 };
 
 const char *workload_name(WorkloadKind kind)
@@ -104,24 +105,22 @@ static bool build_fill(Workload *w, bool back_to_front, Error *err)
     return true;
 }
 
-/* ---- The mesh workload: a torus knot through the camera ------------------- */
+/* ---- The mesh and city workloads: a mesh through a scene's camera --------- */
 
-static bool build_mesh(Workload *w, Error *err)
+/* m (built; freed here on failure) seen by the camera of the built-in scene
+ * `scene`, projected, its faces listed as render_faces would draw them. */
+static bool build_projected(Workload *w, const char *scene, Mesh *m, Error *err)
 {
-    const SceneInfo *knot = scene_find("knot");
-    if (!knot)
-        return error_set(err, "the built-in scene 'knot' is missing");
-    Mesh m;
-    mesh_init(&m);
-    if (!torus_knot_mesh(&m, MESH_RINGS, MESH_SIDES, MESH_TUBE_RADIUS, err)) {
-        mesh_free(&m);
-        return false;
+    const SceneInfo *info = scene_find(scene);
+    if (!info) {
+        mesh_free(m);
+        return error_set(err, "the built-in scene '%s' is missing", scene);
     }
     Camera cam;
-    camera_init(&cam, knot->eye, knot->target, knot->up, knot->fovy, knot->near, knot->far,
+    camera_init(&cam, info->eye, info->target, info->up, info->fovy, info->near, info->far,
                 w->width, w->height);
-    if (!render_from_mesh(&w->render, &m, &cam, "bench torus knot", err)) {
-        mesh_free(&m);
+    if (!render_from_mesh(&w->render, m, &cam, scene, err)) {
+        mesh_free(m);
         return false;
     }
     w->has_render = true;
@@ -144,6 +143,29 @@ static bool build_mesh(Workload *w, Error *err)
         w->nfaces++;
     }
     return true;
+}
+
+static bool build_mesh(Workload *w, Error *err)
+{
+    Mesh m;
+    mesh_init(&m);
+    if (!torus_knot_mesh(&m, MESH_RINGS, MESH_SIDES, MESH_TUBE_RADIUS, err)) {
+        mesh_free(&m);
+        return false;
+    }
+    return build_projected(w, "knot", &m, err);
+}
+
+static bool build_city(Workload *w, Error *err)
+{
+    const SceneInfo *city = scene_find("city");
+    Mesh m;
+    mesh_init(&m);
+    if (city && !city->build(&m, err)) {
+        mesh_free(&m);
+        return false;
+    }
+    return build_projected(w, "city", &m, err);
 }
 
 bool workload_build(Workload *w, WorkloadKind kind, Error *err)
@@ -169,6 +191,10 @@ bool workload_build(Workload *w, WorkloadKind kind, Error *err)
         w->width = MESH_WIDTH;
         w->height = MESH_HEIGHT;
         return build_mesh(w, err);
+    case WORKLOAD_CITY:
+        w->width = CITY_WIDTH;
+        w->height = CITY_HEIGHT;
+        return build_city(w, err);
     case WORKLOAD_COUNT:
         break;
     }

@@ -16,6 +16,9 @@
  *   mesh                a torus knot of 200,000 triangles seen by the knot
  *                       scene's camera at 1920x1080 (projected when built,
  *                       so drawing it is screen-space work like the others)
+ *   city                the built-in scene city (a tower drawn first, 600
+ *                       small buildings behind it) by its camera, 1024x768:
+ *                       most fragments are hidden (lesson 09)
  *
  * In the screen-space workloads every corner's view depth d is uniform in
  * [WORKLOAD_D_MIN, WORKLOAD_D_MAX] (the fill layers space their depths evenly
@@ -50,6 +53,8 @@
 #define MESH_TUBE_RADIUS 0.35
 #define MESH_WIDTH 1920
 #define MESH_HEIGHT 1080
+#define CITY_WIDTH 1024
+#define CITY_HEIGHT 768
 
 typedef enum {
     WORKLOAD_SMALL,
@@ -57,6 +62,7 @@ typedef enum {
     WORKLOAD_FILL_BACK_TO_FRONT,
     WORKLOAD_FILL_FRONT_TO_BACK,
     WORKLOAD_MESH,
+    WORKLOAD_CITY,
     WORKLOAD_COUNT
 } WorkloadKind;
 

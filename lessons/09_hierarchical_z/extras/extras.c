@@ -1,0 +1,187 @@
+/* extras.c: lesson 09's flags (lesson 08's and its own), the shader's
+ * picture and the heat map (see extras.h). */
+#include "extras.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "cli.h"
+#include "compare_naive.h"
+#include "font.h"
+
+enum { FLAG_TILE, FLAG_HIZ_UPDATE, FLAG_HIZ_OUT, FLAG_Z_MODE, FLAG_SORT, FLAG_BUG, FLAG_COLOUR_OUT, FLAG_HEAT_OUT,
+       FLAG_COUNT };
+
+static const LessonFlag FLAGS[FLAG_COUNT] = {
+    [FLAG_TILE] = {"--tile", "N", "the side of a tile of the hierarchical Z, in pixels, 1 to 64 "
+                                  "(default: 8)"},
+    [FLAG_HIZ_UPDATE] = {"--hiz-update", "U", "conservative (the default: a tile takes a new "
+                                              "farthest value only from a triangle that covers it "
+                                              "whole) or exact (every tile drawn into is read again)"},
+    [FLAG_HIZ_OUT] = {"--hiz-out", "FILE.png", "the tile buffer: each tile in the grey of the "
+                                               "farthest depth it holds, with a legend"},
+    [FLAG_Z_MODE] = {"--z-mode", "M", "late (shade, then test), early (the default: test, then "
+                                      "shade what passed) or prepass (depth first, then shade "
+                                      "where equal)"},
+    [FLAG_SORT] = {"--sort", "S", "none (mesh order, the default), front-to-back or "
+                                  "back-to-front, by the view depth of each face's centre"},
+    [FLAG_BUG] = {"--bug", "NAME", "make a classic mistake: early-z-with-discard"},
+    [FLAG_COLOUR_OUT] = {"--colour-out", "FILE.png", "the picture the fragment shader wrote"},
+    [FLAG_HEAT_OUT] = {"--shade-count-out", "FILE.png",
+                       "heat map of how many times each pixel was shaded, with a legend"},
+};
+
+static const char *const MODE_NAMES[] = {[Z_LATE] = "late", [Z_EARLY] = "early",
+                                         [Z_PREPASS] = "prepass"};
+static const char *const SORT_NAMES[] = {[SORT_NONE] = "none",
+                                         [SORT_FRONT_TO_BACK] = "front-to-back",
+                                         [SORT_BACK_TO_FRONT] = "back-to-front"};
+
+const char *z_mode_name(ZMode mode)
+{
+    return MODE_NAMES[mode];
+}
+
+const char *sort_name(SortOrder sort)
+{
+    return SORT_NAMES[sort];
+}
+
+static int find_name(const char *name, const char *const *names, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (strcmp(name, names[i]) == 0)
+            return i;
+    return -1;
+}
+
+EarlyZ early_z_chosen(const Run *run)
+{
+    const char *const *x = run->opt.extra;
+    EarlyZ z = {.depth = depth_setup(UNORM24, STANDARD, run->opt.near, run->opt.far)};
+    z.mode = x[FLAG_Z_MODE] ? (ZMode)find_name(x[FLAG_Z_MODE], MODE_NAMES, 3) : Z_EARLY;
+    z.sort = x[FLAG_SORT] ? (SortOrder)find_name(x[FLAG_SORT], SORT_NAMES, 3) : SORT_NONE;
+    z.bug_discard = x[FLAG_BUG] != NULL;
+    return z;
+}
+
+int tile_chosen(const Run *run)
+{
+    const char *tile = run->opt.extra[FLAG_TILE];
+    return tile ? atoi(tile) : TILE_DEFAULT; /* checked by choose() */
+}
+
+bool exact_chosen(const Run *run)
+{
+    const char *update = run->opt.extra[FLAG_HIZ_UPDATE];
+    return update && strcmp(update, "exact") == 0;
+}
+
+/* ---- The heat map ----------------------------------------------------------- */
+
+static const Rgb HEAT[HEAT_CLASSES] = {
+    {0, 0, 0},      {40, 90, 200},  {60, 170, 80},   {235, 205, 40},
+    {240, 120, 30}, {205, 35, 40},  {255, 255, 255},
+};
+
+Rgb heat_colour(uint32_t times)
+{
+    return HEAT[times < HEAT_CLASSES - 1 ? times : HEAT_CLASSES - 1];
+}
+
+/* The picture, then a band: "shaded:" and one swatch and number per class. */
+bool write_heat_map(const uint32_t *count, int width, int height, const char *path, Error *err)
+{
+    Image im;
+    if (!image_init(&im, width, height + HEAT_LEGEND_HEIGHT, err))
+        return false;
+    image_fill(&im, (Rgb){48, 48, 48});
+    for (int y = 0; y < height; y++)
+        for (int x = 0; x < width; x++)
+            image_set(&im, x, y, heat_colour(count[(size_t)y * (size_t)width + (size_t)x]));
+    Rgb white = {255, 255, 255};
+    int ty = height + (HEAT_LEGEND_HEIGHT - FONT_GLYPH_HEIGHT) / 2, x = 4;
+    draw_text(&im, x, ty, "shaded:", white);
+    x += text_width("shaded:") + 6;
+    for (int k = 0; k < HEAT_CLASSES; k++) {
+        char label[8];
+        snprintf(label, sizeof label, k == HEAT_CLASSES - 1 ? "%d+" : "%d", k);
+        for (int dy = 0; dy < 10; dy++)
+            for (int dx = 0; dx < 10; dx++)
+                image_set(&im, x + dx, ty - 2 + dy, HEAT[k]);
+        for (int d = 0; d < 10; d++) { /* a grey frame: black shows on the band */
+            image_set(&im, x + d, ty - 2, (Rgb){150, 150, 150});
+            image_set(&im, x + d, ty + 7, (Rgb){150, 150, 150});
+            image_set(&im, x, ty - 2 + d, (Rgb){150, 150, 150});
+            image_set(&im, x + 9, ty - 2 + d, (Rgb){150, 150, 150});
+        }
+        draw_text(&im, x + 13, ty, label, white);
+        x += 13 + text_width(label) + 8;
+    }
+    bool ok = render_make_parent_dirs(path, err) && image_write_png(&im, path, err);
+    image_free(&im);
+    return ok;
+}
+
+static bool write_colour(const EarlyZ *z, int width, int height, const char *path, Error *err)
+{
+    Image im;
+    if (!image_init(&im, width, height, err))
+        return false;
+    for (int y = 0; y < height; y++)
+        for (int x = 0; x < width; x++)
+            image_set(&im, x, y, z->colour[(size_t)y * (size_t)width + (size_t)x]);
+    bool ok = render_make_parent_dirs(path, err) && image_write_png(&im, path, err);
+    image_free(&im);
+    return ok;
+}
+
+static bool after_write(Run *run, Error *err)
+{
+    const EarlyZ *z = (const EarlyZ *)run->target.depth_setup;
+    const char *colour = run->opt.extra[FLAG_COLOUR_OUT], *heat = run->opt.extra[FLAG_HEAT_OUT];
+    const char *hiz = run->opt.extra[FLAG_HIZ_OUT];
+    int w = run->target.width, h = run->target.height;
+    return (!colour || write_colour(z, w, h, colour, err)) &&
+           (!heat || write_heat_map(z->shade_count, w, h, heat, err)) &&
+           (!hiz || write_hiz_picture(&run->target, hiz, err));
+}
+
+static bool choose(Run *run, Error *err)
+{
+    const char *const *x = run->opt.extra;
+    if (run->opt.steps_dir) /* crowd has more faces than --steps takes, and a prepass draws twice */
+        return error_set(err, "--steps does not apply to %s (the work it counts is per "
+                              "fragment, not per face: see --shade-count-out)", run->lesson->program);
+    long tile;
+    if (x[FLAG_TILE] && !parse_int("--tile", x[FLAG_TILE], 1, TILE_MAX, &tile, err))
+        return false;
+    if (x[FLAG_HIZ_UPDATE] && strcmp(x[FLAG_HIZ_UPDATE], "exact") != 0 &&
+        strcmp(x[FLAG_HIZ_UPDATE], "conservative") != 0)
+        return error_set(err, "--hiz-update: '%s' is not one of conservative, exact",
+                         x[FLAG_HIZ_UPDATE]);
+    if (x[FLAG_Z_MODE] && find_name(x[FLAG_Z_MODE], MODE_NAMES, 3) < 0)
+        return error_set(err, "--z-mode: '%s' is not one of late, early, prepass", x[FLAG_Z_MODE]);
+    if (x[FLAG_SORT] && find_name(x[FLAG_SORT], SORT_NAMES, 3) < 0)
+        return error_set(err, "--sort: '%s' is not one of none, front-to-back, back-to-front",
+                         x[FLAG_SORT]);
+    if (x[FLAG_BUG] && strcmp(x[FLAG_BUG], "early-z-with-discard") != 0)
+        return error_set(err, "--bug: '%s' is not one of early-z-with-discard", x[FLAG_BUG]);
+    if (x[FLAG_BUG])
+        run_note(run, "  bug early-z-with-discard: cutouts were tested and wrote depth before "
+                      "their shader discarded, so their holes hide what is behind them");
+    run->after_write = after_write;
+    static const int OUT[] = {FLAG_COLOUR_OUT, FLAG_HEAT_OUT, FLAG_HIZ_OUT};
+    for (int k = 0; k < 3; k++) {
+        const char *path = x[OUT[k]];
+        if (path) {
+            run_add_output(run, FLAGS[OUT[k]].flag, path);
+            if (!compare_flag_path_ok(&run->opt, FLAGS[OUT[k]].flag, path, err))
+                return false;
+        }
+    }
+    return true;
+}
+
+const Extras EXTRAS = {.flags = FLAGS, .n_flags = FLAG_COUNT, .choose = choose};

@@ -1,0 +1,95 @@
+/* hiz_picture.c: --hiz-out, the tile buffer as a picture (extras.h). Every
+ * pixel of a tile shows the tile's farthest value as a view depth d, in the
+ * greys of --shade depth (near bright, linear in 1/d); a tile that still
+ * holds the far plane somewhere shows the depth pictures' background. The
+ * last column and row of each tile are darker, so the tiles show. Under
+ * the picture, a legend: the ramp from the nearest d to the farthest. */
+#include "extras.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "font.h"
+
+static Rgb darker(Rgb c)
+{
+    return (Rgb){(uint8_t)(c.r * 3 / 4), (uint8_t)(c.g * 3 / 4), (uint8_t)(c.b * 3 / 4)};
+}
+
+/* The legend band: "tile's farthest d:", a ramp labelled at both ends, then
+ * a swatch of the background, "far plane". */
+static void draw_legend(Image *im, int top, double dmin, double dmax)
+{
+    Rgb white = {255, 255, 255};
+    int ty = top + (HIZ_LEGEND_HEIGHT - FONT_GLYPH_HEIGHT) / 2, x = 4;
+    char text[64];
+    draw_text(im, x, ty, "tile's farthest d:", white);
+    x += text_width("tile's farthest d:") + 6;
+    snprintf(text, sizeof text, "%.3g", dmin);
+    draw_text(im, x, ty, text, white);
+    x += text_width(text) + 4;
+    float ramp[100];
+    Image strip = {.width = 100, .height = 1, .rgb = NULL};
+    Error err;
+    if (image_init(&strip, 100, 1, &err)) {
+        for (int k = 0; k < 100; k++) /* 100 steps even in 1/d, as the greys go */
+            ramp[k] = (float)(1.0 / (1.0 / dmin + (1.0 / dmax - 1.0 / dmin) * k / 99.0));
+        depth_to_grey_between(ramp, dmin, dmax, &strip);
+        for (int k = 0; k < 100 && x + k < im->width; k++)
+            for (int dy = -2; dy < FONT_GLYPH_HEIGHT + 2; dy++)
+                image_set(im, x + k, ty + dy, image_get(&strip, k, 0));
+        image_free(&strip);
+    }
+    x += 104;
+    snprintf(text, sizeof text, "%.3g", dmax);
+    draw_text(im, x, ty, text, white);
+    x += text_width(text) + 12;
+    for (int dy = -2; dy < FONT_GLYPH_HEIGHT + 2; dy++)
+        for (int dx = 0; dx < 10 && x + dx < im->width; dx++)
+            image_set(im, x + dx, ty + dy, DEPTH_BACKGROUND);
+    draw_text(im, x + 14, ty, "far plane (a pixel not drawn)", white);
+}
+
+bool write_hiz_picture(const Target *t, const char *path, Error *err)
+{
+    const HierarchicalZ *h = t->hiz;
+    int w = t->width, hgt = t->height;
+    float *d = malloc((size_t)w * (size_t)hgt * sizeof *d);
+    Image im, tiles;
+    if (!d)
+        return error_set(err, "out of memory for the tile picture");
+    double dmin = INFINITY, dmax = 0;
+    for (int y = 0; y < hgt; y++)
+        for (int x = 0; x < w; x++) {
+            int k = y / h->tile * h->tiles_x + x / h->tile;
+            d[(size_t)y * (size_t)w + (size_t)x] = (float)stored_to_depth(t, h->far[k]);
+        }
+    for (size_t i = 0; i < (size_t)w * (size_t)hgt; i++)
+        if (isfinite(d[i]))
+            dmin = fmin(dmin, d[i]), dmax = fmax(dmax, d[i]);
+    if (!isfinite(dmin))
+        dmin = dmax = 1;
+    bool ok = image_init(&tiles, w, hgt, err);
+    if (ok)
+        depth_to_grey_between(d, dmin, dmax, &tiles);
+    free(d);
+    if (ok && !image_init(&im, w, hgt + HIZ_LEGEND_HEIGHT, err)) {
+        image_free(&tiles);
+        ok = false;
+    }
+    if (!ok)
+        return false;
+    image_fill(&im, (Rgb){48, 48, 48});
+    for (int y = 0; y < hgt; y++)
+        for (int x = 0; x < w; x++) {
+            Rgb c = image_get(&tiles, x, y);
+            bool edge = h->tile > 2 && (x % h->tile == h->tile - 1 || y % h->tile == h->tile - 1);
+            image_set(&im, x, y, edge ? darker(c) : c);
+        }
+    image_free(&tiles);
+    draw_legend(&im, hgt, dmin, dmax);
+    ok = render_make_parent_dirs(path, err) && image_write_png(&im, path, err);
+    image_free(&im);
+    return ok;
+}

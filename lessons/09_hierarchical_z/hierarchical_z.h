@@ -1,0 +1,40 @@
+/* hierarchical_z.h: lesson 09, hierarchical Z (docs/09_hierarchical_z.md).
+ *
+ *   tile buffer   per tile of T x T pixels (--tile T, 8 by default): the
+ *                 farthest value stored in the tile
+ *   a tile is     when the triangle's nearest value over the tile is
+ *   skipped       farther than the tile's farthest: no fragment could pass
+ *   kept up to    a write only brings a pixel nearer, so an old farthest
+ *   date          value is still a bound. A triangle that covers a tile
+ *                 whole leaves it holding what was just tested: its new
+ *                 farthest value, read as the pixels are tested. Any other
+ *                 tile keeps its old value (as GPUs do), or with
+ *                 --hiz-update exact is read again after every triangle
+ *   rasterizer    tiles.c: a convex polygon drawn tile by tile, each tile
+ *                 asked here first, each pixel then tested as in lesson 06
+ * Lesson 08's shader, modes and sorts run on top, unchanged. */
+#ifndef HIERARCHICAL_Z_H
+#define HIERARCHICAL_Z_H
+
+#include "depth_format.h"
+
+typedef struct HierarchicalZ {
+    int tile, tiles_x, tiles_y; /* tile side in pixels; tiles across and down */
+    float *far;                 /* per tile: the farthest value stored in it, or a bound */
+    bool exact;                 /* --hiz-update exact: every tile drawn into read again */
+    bool count_skipped;         /* count the fragments of skipped tiles (the summary) */
+    unsigned long long tiles_tested, tiles_skipped, fragments_skipped, faces_skipped;
+} HierarchicalZ;
+
+/* The steps, in the order hierarchical_z.c takes them (each is explained there). */
+bool hiz_begin(HierarchicalZ *h, Target *t, int tile, Error *err); /* t->hiz = h */
+void hiz_read_tile(HierarchicalZ *h, const Target *t, int tile);
+void hiz_clear(Target *t);                                   /* clear_depth, every tile read */
+float hiz_nearest(const DepthSetup *s, int x0, int y0, int x1, int y1); /* of the plane */
+bool hiz_skips(const Target *t, int tile, float nearest);
+void hiz_free(HierarchicalZ *h);
+
+/* Lesson 07's faces (decals biased) through tiles.c, with the tile buffer. */
+extern const Rasterizer HIERARCHICAL_ZBUFFER;
+
+#endif
