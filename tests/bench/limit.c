@@ -15,9 +15,9 @@
  * depth tests on a staircase of pixels in the rows and columns of the
  * triangle's square (1 + 2 + ... + 10 = 55 pixels where the lessons cover
  * about 50), with no coverage work. It shows what small's scattered memory
- * accesses cost by themselves. And once more without target_record: depth
- * and face are tested and written, nothing is counted, so overdraw[] is
- * never touched. The difference is what the bookkeeping costs.
+ * accesses cost by themselves. And once more with counting off (target.h):
+ * depth and face are tested and written, target_record returns at once, so
+ * overdraw[] is never touched. The difference is what the bookkeeping costs.
  *
  * Prints three CSV lines (measure.h), lesson "limit", workloads
  * "fill_back_to_front", "small" and "small_uncounted". */
@@ -52,18 +52,6 @@ static void depth_test_run(Target *t, int y, int x0, int x1, float d, int face)
     }
 }
 
-/* The same test and writes, with nothing counted. */
-static void depth_test_run_uncounted(Target *t, int y, int x0, int x1, float d, int face)
-{
-    size_t i = (size_t)y * (size_t)t->width + (size_t)x0;
-    for (int x = x0; x < x1; x++, i++) {
-        if (d < t->depth[i]) {
-            t->depth[i] = d;
-            t->face[i] = face;
-        }
-    }
-}
-
 /* The layers of fill_back_to_front, farthest first: d from WORKLOAD_D_MAX
  * down to WORKLOAD_D_MIN, as workloads.c spaces them. */
 static void fill_layers(Target *t)
@@ -80,6 +68,7 @@ static void fill_layers(Target *t)
  * gets k + 1 pixels, at the triangle's first corner's depth. */
 static void staircases(Target *t, const Workload *w, bool counted)
 {
+    t->counting = counted;
     int leg = (int)SMALL_LEG; /* staircase rows */
     for (int f = 0; f < w->nfaces; f++) {
         const ScreenVertex *v = w->faces[f].v;
@@ -90,10 +79,7 @@ static void staircases(Target *t, const Workload *w, bool counted)
         if (y0 + leg > t->height)
             y0 = t->height - leg;
         for (int k = 0; k < leg; k++)
-            if (counted)
-                depth_test_run(t, y0 + k, x0, x0 + k + 1, (float)v[0].d, f);
-            else
-                depth_test_run_uncounted(t, y0 + k, x0, x0 + k + 1, (float)v[0].d, f);
+            depth_test_run(t, y0 + k, x0, x0 + k + 1, (float)v[0].d, f);
     }
 }
 
