@@ -19,6 +19,7 @@ bool target_init(Target *t, int width, int height, Error *err)
 {
     Target empty = {0};
     *t = empty;
+    t->counting = true;
     t->trace.pixel = -1;
     if (width < 1 || width > IMAGE_MAX_SIDE || height < 1 || height > IMAGE_MAX_SIDE)
         return error_set(err, "image size %dx%d is out of range (1 to %d on a side)", width,

@@ -23,24 +23,24 @@ typedef struct {
     struct DepthSetup *depth_setup; /* its format, from lesson 06 on (NULL before) */
     struct HierarchicalZ *hiz;      /* its tile buffer, in lesson 09 on (NULL before) */
     int32_t *face;
+    bool counting; /* on from target_init; off: no overdraw, stats or trace kept */
     uint32_t *overdraw;
     FragmentStats stats;
     TraceLog trace;
 } Target;
 
-/* Buffers of width x height (1 .. IMAGE_MAX_SIDE each), counts at zero, no
- * pixel traced. The depth buffer is not cleared here: the lesson's own
- * clear_depth does that, the one place it happens. */
+/* Buffers of width x height (1 .. IMAGE_MAX_SIDE each), counting on, counts at
+ * zero, no pixel traced. The lesson's own clear_depth clears depth[]. */
 bool target_init(Target *t, int width, int height, Error *err);
 void target_free(Target *t);
-/* Trace pixel (x, y) from now on (x, y inside the target). */
-void target_trace_pixel(Target *t, int x, int y);
+void target_trace_pixel(Target *t, int x, int y); /* --trace it from now on; inside t */
 
-/* Called by a lesson's depth test for every fragment it tests at pixel i:
- * counted, and logged when i is the traced pixel (--trace). Not static: a
- * lesson's inline depth_test calls it (target.c has its external definition). */
+/* Every fragment a lesson's depth test tests at pixel i: counted, and logged at
+ * the traced pixel (--trace). Not static: target.c has its external definition. */
 inline void target_record(Target *t, size_t i, int face, float value, float stored, bool passed)
 {
+    if (!t->counting)
+        return;
     t->overdraw[i]++;
     t->stats.tested++;
     t->stats.passed += passed;

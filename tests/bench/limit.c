@@ -6,21 +6,24 @@
  * work taken away. FILL_LAYERS layers, nearest last, each one a plain walk
  * over the rows of the same 1024x1024 Target, and at every pixel the depth
  * test every lesson must do: compare with the stored value, report the
- * fragment with target_record (target.h: every tested fragment is counted),
- * write depth and face when it passes. No edge, no interpolation, no setup:
- * what remains is the memory traffic and the bookkeeping of one fragment.
- * Every row of the benchmark's table is compared with it.
+ * fragment with target_record, write depth and face when it passes. No edge,
+ * no interpolation, no setup: what remains is the memory traffic of one
+ * fragment. Counting is off (target.h), as in the lessons' timed repetitions
+ * (bench.c), so target_record returns at once. Every row of the benchmark's
+ * table is compared with it.
  *
  * Then the same for the small workload: for each of its triangles, the same
  * depth tests on a staircase of pixels in the rows and columns of the
  * triangle's square (1 + 2 + ... + 10 = 55 pixels where the lessons cover
  * about 50), with no coverage work. It shows what small's scattered memory
- * accesses cost by themselves. And once more without target_record: depth
- * and face are tested and written, nothing is counted, so overdraw[] is
- * never touched. The difference is what the bookkeeping costs.
+ * accesses cost by themselves.
  *
- * Prints three CSV lines (measure.h), lesson "limit", workloads
- * "fill_back_to_front", "small" and "small_uncounted". */
+ * And both once more with counting on, as a lesson program counts for its
+ * summary: overdraw[], the totals and the --trace check at every fragment.
+ * The difference is what the bookkeeping costs.
+ *
+ * Prints four CSV lines (measure.h), lesson "limit", workloads
+ * "fill_back_to_front", "fill_counted", "small" and "small_counted". */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -52,18 +55,6 @@ static void depth_test_run(Target *t, int y, int x0, int x1, float d, int face)
     }
 }
 
-/* The same test and writes, with nothing counted. */
-static void depth_test_run_uncounted(Target *t, int y, int x0, int x1, float d, int face)
-{
-    size_t i = (size_t)y * (size_t)t->width + (size_t)x0;
-    for (int x = x0; x < x1; x++, i++) {
-        if (d < t->depth[i]) {
-            t->depth[i] = d;
-            t->face[i] = face;
-        }
-    }
-}
-
 /* The layers of fill_back_to_front, farthest first: d from WORKLOAD_D_MAX
  * down to WORKLOAD_D_MIN, as workloads.c spaces them. */
 static void fill_layers(Target *t)
@@ -78,7 +69,7 @@ static void fill_layers(Target *t)
 
 /* small's triangles, each as a staircase in its square: row k of the square
  * gets k + 1 pixels, at the triangle's first corner's depth. */
-static void staircases(Target *t, const Workload *w, bool counted)
+static void small_staircases(Target *t, const Workload *w)
 {
     int leg = (int)SMALL_LEG; /* staircase rows */
     for (int f = 0; f < w->nfaces; f++) {
@@ -90,21 +81,8 @@ static void staircases(Target *t, const Workload *w, bool counted)
         if (y0 + leg > t->height)
             y0 = t->height - leg;
         for (int k = 0; k < leg; k++)
-            if (counted)
-                depth_test_run(t, y0 + k, x0, x0 + k + 1, (float)v[0].d, f);
-            else
-                depth_test_run_uncounted(t, y0 + k, x0, x0 + k + 1, (float)v[0].d, f);
+            depth_test_run(t, y0 + k, x0, x0 + k + 1, (float)v[0].d, f);
     }
-}
-
-static void small_staircases(Target *t, const Workload *w)
-{
-    staircases(t, w, true);
-}
-
-static void small_staircases_uncounted(Target *t, const Workload *w)
-{
-    staircases(t, w, false);
 }
 
 typedef void (*DrawFn)(Target *t, const Workload *w);
@@ -125,15 +103,16 @@ static void clear_to_infinity(Target *t)
     }
 }
 
-/* Draws reps times after the warm-up into a fresh LIMIT_SIDE target.
- * fragments: how many depth tests one drawing makes, worked out by the caller
- * (an uncounted drawing cannot tell); a counted one must agree. */
-static bool measure(DrawFn draw, const Workload *w, const char *workload, long triangles,
-                    uint64_t fragments, int reps, Measurement *m, Error *err)
+/* Draws reps times after the warm-up into a fresh LIMIT_SIDE target, counting
+ * or not. fragments: how many depth tests one drawing makes, worked out by
+ * the caller (an uncounted drawing cannot tell); a counted one must agree. */
+static bool measure(DrawFn draw, bool counting, const Workload *w, const char *workload,
+                    long triangles, uint64_t fragments, int reps, Measurement *m, Error *err)
 {
     Target t;
     if (!target_init(&t, LIMIT_SIDE, LIMIT_SIDE, err))
         return false;
+    t.counting = counting;
     double times[MAX_REPS];
     for (int k = -BENCH_WARMUP; k < reps; k++) {
         target_reset(&t, clear_to_infinity);
@@ -149,7 +128,7 @@ static bool measure(DrawFn draw, const Workload *w, const char *workload, long t
     summarise_times(times, reps, &r.median_s, &r.min_s, &r.max_s);
     *m = r;
     target_free(&t);
-    if (counted != 0 && counted != fragments)
+    if (counted != (counting ? fragments : 0))
         return error_set(err, "limit %s: %llu fragments counted, %llu expected", workload,
                          (unsigned long long)counted, (unsigned long long)fragments);
     return true;
@@ -174,26 +153,27 @@ int main(int argc, char **argv)
     }
 
     Workload small;
-    Measurement fill, stairs, bare;
+    Measurement m[4];
     Error err;
     bool ok = workload_build(&small, WORKLOAD_SMALL, &err);
     if (ok) {
         uint64_t fill_fragments = (uint64_t)FILL_LAYERS * LIMIT_SIDE * LIMIT_SIDE;
         uint64_t stair_fragments = (uint64_t)small.nfaces * SMALL_STAIR_PIXELS;
-        ok = measure(draw_fill, NULL, workload_name(WORKLOAD_FILL_BACK_TO_FRONT), 0,
-                     fill_fragments, reps, &fill, &err) &&
-             measure(small_staircases, &small, small.name, small.ntris, stair_fragments, reps,
-                     &stairs, &err) &&
-             measure(small_staircases_uncounted, &small, "small_uncounted", small.ntris,
-                     stair_fragments, reps, &bare, &err);
+        ok = measure(draw_fill, false, NULL, workload_name(WORKLOAD_FILL_BACK_TO_FRONT), 0,
+                     fill_fragments, reps, &m[0], &err) &&
+             measure(draw_fill, true, NULL, "fill_counted", 0, fill_fragments, reps, &m[1],
+                     &err) &&
+             measure(small_staircases, false, &small, small.name, small.ntris, stair_fragments,
+                     reps, &m[2], &err) &&
+             measure(small_staircases, true, &small, "small_counted", small.ntris,
+                     stair_fragments, reps, &m[3], &err);
         workload_free(&small);
     }
     if (!ok) {
         fprintf(stderr, "%s: error: %s\n", program, err.msg);
         return 1;
     }
-    measure_print(stdout, &fill);
-    measure_print(stdout, &stairs);
-    measure_print(stdout, &bare);
+    for (int k = 0; k < 4; k++)
+        measure_print(stdout, &m[k]);
     return 0;
 }

@@ -5,6 +5,11 @@
  * is cleared, untimed: only drawing is measured. The result is the median
  * time and the spread (fastest and slowest repetition).
  *
+ * The warm-up draws with counting on (Target.counting, target.h): the
+ * fragments tested come from it. The timed repetitions draw with counting
+ * off, as a lesson asked for no count would: no overdraw[], no totals, no
+ * --trace check (docs/performance.md, "What counting costs").
+ *
  * Each bench binary prints one CSV line per workload (measure_print), the
  * columns of MEASURE_CSV_HEADER; tests/bench/run-bench.sh turns the lines of
  * every binary into the table. */
@@ -28,7 +33,7 @@ typedef struct {
     int width, height;
     int reps;
     long triangles;       /* drawn per repetition */
-    uint64_t fragments;   /* tested per repetition (Target.stats.tested) */
+    uint64_t fragments;   /* tested per repetition (Target.stats.tested of the warm-up) */
     double median_s, min_s, max_s;
     uint64_t checksum;    /* of the depth buffer after one repetition */
 } Measurement;

@@ -34,6 +34,7 @@ static void init_allocates_with_counts_at_zero(void **state)
     assert_int_equal(t.stats.tested, 0);
     assert_int_equal(t.trace.pixel, -1);
     assert_int_equal(t.trace.count, 0);
+    assert_true(t.counting); /* a lesson's summary prints the counts */
     target_free(&t);
 }
 
@@ -82,6 +83,39 @@ static void record_counts_and_traces_only_the_traced_pixel(void **state)
     target_free(&t);
 }
 
+/* Counting off (make bench's timed repetitions): target_record keeps no book,
+ * not the totals, not overdraw[], not the traced pixel's log; switched back
+ * on, it counts from where the books were left. */
+static void record_with_counting_off_keeps_no_books(void **state)
+{
+    (void)state;
+    Target t;
+    Error err;
+    assert_true(target_init(&t, 4, 3, &err));
+    target_trace_pixel(&t, 2, 1); /* pixel 6 */
+    t.counting = false;
+    target_record(&t, 6, 0, 5.0f, INFINITY, true);
+    target_record(&t, 6, 1, 7.0f, 5.0f, false);
+    target_record(&t, 5, 2, 1.0f, INFINITY, true);
+    assert_int_equal(t.stats.tested, 0);
+    assert_int_equal(t.stats.passed, 0);
+    assert_int_equal(t.stats.failed, 0);
+    for (int i = 0; i < 4 * 3; i++)
+        if (t.overdraw[i] != 0)
+            fail_msg("pixel %d counted %u fragments with counting off", i, t.overdraw[i]);
+    assert_int_equal(t.trace.count, 0);
+
+    t.counting = true;
+    target_record(&t, 6, 3, 2.0f, 5.0f, true);
+    assert_int_equal(t.stats.tested, 1);
+    assert_int_equal(t.stats.passed, 1);
+    assert_int_equal(t.overdraw[6], 1);
+    assert_int_equal(t.overdraw[5], 0);
+    assert_int_equal(t.trace.count, 1);
+    assert_int_equal(t.trace.entries[0].face, 3);
+    target_free(&t);
+}
+
 static void trace_log_keeps_order_as_it_grows(void **state)
 {
     (void)state;
@@ -114,6 +148,7 @@ int main(void)
         cmocka_unit_test(init_allocates_with_counts_at_zero),
         cmocka_unit_test(init_refuses_sizes_outside_one_to_16384),
         cmocka_unit_test(record_counts_and_traces_only_the_traced_pixel),
+        cmocka_unit_test(record_with_counting_off_keeps_no_books),
         cmocka_unit_test(trace_log_keeps_order_as_it_grows),
         cmocka_unit_test(trace_log_stops_at_its_cap_and_says_so),
     };
