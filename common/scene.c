@@ -532,7 +532,7 @@ static const SceneInfo SCENES[] = {
      .eye = {0, 6, 8}, .target = {0, 0.5, -22}, .up = {0, 1, 0},
      .fovy = 50, .near = 0.5, .far = 100},
     {.name = "city", .build = build_city,
-     .about = "a tower drawn first in front of a city of 600 small buildings",
+     .about = "a wall drawn first, hiding a city of 510 small buildings behind it",
      .eye = {0, 18, 0}, .target = {0, 4, -60}, .up = {0, 1, 0},
      .fovy = 55, .near = 1, .far = 200},
 };

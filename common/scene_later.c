@@ -5,7 +5,7 @@
  *   crowd   a few hundred figures in rows, fences and trees, in shuffled
  *           order (lesson 08, early-Z): the flat fences and leaves are in
  *           group `cutout`
- *   city    one large building drawn first, in front of 600 small ones
+ *   city    a large wall drawn first, hiding a city of 510 small buildings
  *           (lesson 09, hierarchical Z)
  *
  * As in scene.c, a face's position in its build function is its index, and
@@ -273,11 +273,13 @@ bool build_crowd(Mesh *m, Error *err)
 
 /* ---- city ---------------------------------------------------------------- */
 
-/* A large building close to the camera, drawn first, hides most of a city of
- * CITY_ROWS x CITY_COLUMNS small buildings behind it; the city shows on the
- * right of it and above the buildings' roofs. Each small building is a closed
- * box on a 5-unit grid, from z = -30 back to z = -125, sunk 0.5 into the
- * ground (drawn second, after the large building), 3 x 3 and 2 to 9 high. */
+/* A large wall close to the camera, one quad drawn first, hides a city of
+ * CITY_ROWS x CITY_COLUMNS small buildings behind it, every one of them:
+ * to the right of the wall the ground shows, empty, and the sky.
+ * Each small building is a closed box on a 5-unit grid, x from -72.5 to
+ * 7.5, z from -30 back to -175, sunk 0.5 into the ground (drawn second,
+ * after the wall), 3 x 3 and 2 to 9 high. Nearly every fragment of the
+ * city fails the depth test: lesson 09's hierarchical Z skips them. */
 #define CITY_ROWS 30
 #define CITY_COLUMNS 17
 #define CITY_STEP 5.0
@@ -290,14 +292,16 @@ bool build_city(Mesh *m, Error *err)
         {0.8, 0.75, 0.45}};
     static const char *const NAMES[CITY_COLOURS] = {"stone", "glass", "brick", "concrete",
                                                     "sandstone"};
-    int occluder = mesh_add_material(m, "tower", vec3(0.45, 0.45, 0.55), err);
+    int occluder = mesh_add_material(m, "wall", vec3(0.45, 0.45, 0.55), err);
     int ground = mesh_add_material(m, "ground", vec3(0.35, 0.35, 0.33), err);
     int colour[CITY_COLOURS];
     bool ok = occluder >= 0 && ground >= 0;
     for (int k = 0; ok && k < CITY_COLOURS; k++)
         ok = (colour[k] = mesh_add_material(m, NAMES[k], vec3(COLOURS[k][0], COLOURS[k][1],
                                                                COLOURS[k][2]), err)) >= 0;
-    ok = ok && add_quad(m, vec3(-60, -1, -12), vec3(6, -1, -12), vec3(6, 45, -12), vec3(-60, 45, -12), occluder, err) &&
+    ok = ok &&
+         add_quad(m, vec3(-60, -1, -12), vec3(6, -1, -12), vec3(6, 45, -12), vec3(-60, 45, -12),
+                  occluder, err) &&
          add_quad(m, vec3(-90, 0, -8), vec3(90, 0, -8), vec3(90, 0, -190), vec3(-90, 0, -190),
                   ground, err);
     uint32_t rng = 1990;

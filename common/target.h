@@ -2,8 +2,7 @@
  *
  * depth[]    what the lesson's depth test keeps per pixel (d in lessons 02
  *            and 03, 1/d in 04); the lesson's clear_depth clears it and face[]
- * face[]     the face that won each pixel, NO_FACE where none did; colours
- *            come from it after drawing (shade.h)
+ * face[]     the face that won each pixel, NO_FACE where none did (shade.h)
  * overdraw[] fragments tested per pixel (--overdraw-out) */
 #ifndef TARGET_H
 #define TARGET_H

@@ -149,6 +149,19 @@ for bug in "" early-z-with-discard; do # close behind the first fence
 done
 echo "make-doc-images: 08_early_z done"
 
+# ---- 09_hierarchical_z: city's tile buffer, city seen from above (the city
+# behind the wall), and the heat maps of times shaded with late-Z in
+# lessons 08 and 09 (late shades every fragment tested: the skipped ones
+# are neither tested nor shaded).
+make -s BUILD="$build" "$build/bin/09_hierarchical_z"
+l09="$build/bin/09_hierarchical_z"
+"$l09" --out "$images/09_city.png" --hiz-out "$images/09_tiles.png" \
+       --world-out "$images/09_world.png" >/dev/null
+"$l08" --scene city --z-mode late --out "$build/08.png" \
+       --shade-count-out "$images/09_heat_08.png" >/dev/null
+"$l09" --z-mode late --out "$build/09.png" --shade-count-out "$images/09_heat_09.png" >/dev/null
+echo "make-doc-images: 09_hierarchical_z done"
+
 # ---- Diagrams drawn by code (tools/diagrams.c): lesson 02's edge functions
 # and top-left rule, lesson 03's d and 1/d along a row, lesson 04's edge walk
 make -s BUILD="$build" "$build/tools/diagrams"

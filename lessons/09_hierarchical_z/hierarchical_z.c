@@ -20,11 +20,8 @@ bool hiz_begin(HierarchicalZ *h, Target *t, int tile, Error *err)
     h->tiles_x = (t->width + tile - 1) / tile;
     h->tiles_y = (t->height + tile - 1) / tile;
     size_t n = (size_t)h->tiles_x * (size_t)h->tiles_y;
-    h->far = malloc(n * sizeof *h->far);
-    if (!h->far) {
-        hiz_free(h);
+    if (!(h->far = malloc(n * sizeof *h->far)))
         return error_set(err, "out of memory for %zu tiles", n);
-    }
     t->hiz = h;
     return true;
 }
@@ -72,30 +69,12 @@ float hiz_nearest(const DepthSetup *s, int x0, int y0, int x1, int y1)
  * tie: lesson 08's prepass draws again where depth is equal.) */
 bool hiz_skips(const Target *t, int tile, float nearest)
 {
-    HierarchicalZ *h = t->hiz;
-    h->tiles_tested++;
-    bool skip = farther(t->depth_setup, nearest, h->far[tile]);
-    h->tiles_skipped += skip;
+    bool skip = farther(t->depth_setup, nearest, t->hiz->far[tile]);
+    t->hiz->tiles_tested++, t->hiz->tiles_skipped += skip;
     return skip;
 }
 
 void hiz_free(HierarchicalZ *h)
 {
-    free(h->far);
-    h->far = NULL;
+    free(h->far), h->far = NULL;
 }
-
-/* Lesson 07's face; it is skipped whole when every tile it asked was. */
-static void draw_tiled_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
-{
-    HierarchicalZ *h = t->hiz;
-    unsigned long long tested = h ? h->tiles_tested : 0, skipped = h ? h->tiles_skipped : 0;
-    DEPTH_BIAS_ZBUFFER.draw_face(t, f, ctx);
-    if (h && h->tiles_tested > tested && h->tiles_tested - tested == h->tiles_skipped - skipped)
-        h->faces_skipped++;
-}
-
-const Rasterizer HIERARCHICAL_ZBUFFER = {
-    .clear = hiz_clear, .draw_face = draw_tiled_face, .stored_to_depth = stored_to_depth,
-    .clips = true,
-};

@@ -1,18 +1,11 @@
 /* hierarchical_z.h: lesson 09, hierarchical Z (docs/09_hierarchical_z.md).
  *
- *   tile buffer   per tile of T x T pixels (--tile T, 8 by default): the
- *                 farthest value stored in the tile
- *   a tile is     when the triangle's nearest value over the tile is
- *   skipped       farther than the tile's farthest: no fragment could pass
- *   kept up to    a write only brings a pixel nearer, so an old farthest
- *   date          value is still a bound. A triangle that covers a tile
- *                 whole leaves it holding what was just tested: its new
- *                 farthest value, read as the pixels are tested. Any other
- *                 tile keeps its old value (as GPUs do), or with
- *                 --hiz-update exact is read again after every triangle
- *   rasterizer    tiles.c: a convex polygon drawn tile by tile, each tile
- *                 asked here first, each pixel then tested as in lesson 06
- * Lesson 08's shader, modes and sorts run on top, unchanged. */
+ *   tile buffer  per tile of T x T pixels (--tile T, 8 by default): the
+ *                farthest value stored in it, or a bound on it (a write only
+ *                brings a pixel nearer); a tile a triangle covered whole is
+ *                read again (with --hiz-update exact, any tile drawn into)
+ *   skipped      a tile where the triangle's nearest value is farther than
+ *                the tile's farthest: no fragment there could pass (tiles.c) */
 #ifndef HIERARCHICAL_Z_H
 #define HIERARCHICAL_Z_H
 
@@ -34,7 +27,7 @@ float hiz_nearest(const DepthSetup *s, int x0, int y0, int x1, int y1); /* of th
 bool hiz_skips(const Target *t, int tile, float nearest);
 void hiz_free(HierarchicalZ *h);
 
-/* Lesson 07's faces (decals biased) through tiles.c, with the tile buffer. */
+/* Lesson 07's faces (decals biased) drawn by tiles.c, with the tile buffer. */
 extern const Rasterizer HIERARCHICAL_ZBUFFER;
 
 #endif

@@ -1,10 +1,9 @@
 /* main.c: lesson 09, hierarchical Z (docs/09_hierarchical_z.md).
  *
  * The outline of the program. What this lesson teaches is in
- * hierarchical_z.c, the tile buffer (each tile's farthest stored value,
- * kept exact), and tiles.c, the rasterizer that asks it before it touches
- * a tile's pixels. Lesson 08's shader and z-modes run on top, unchanged;
- * what the lesson shows but does not teach is in extras/. */
+ * hierarchical_z.c, the tile buffer (each tile's farthest stored value),
+ * and tiles.c, the rasterizer that asks it before it touches a tile's
+ * pixels. What it shows but does not teach is in extras/. */
 #include <stdio.h>
 
 #include "extras/extras.h"
@@ -12,7 +11,7 @@
 #include "lesson.h"
 
 /* How much shading the picture cost, and what the tiles saved. */
-static void print_counts(const Target *t)
+static void print_shading(const Target *t)
 {
     const EarlyZ *z = (const EarlyZ *)t->depth_setup;
     const HierarchicalZ *h = t->hiz;
@@ -27,12 +26,12 @@ static void print_counts(const Target *t)
 static const Lesson LESSON = {
     .program = "09_hierarchical_z",
     .purpose = "Lesson 09: hierarchical Z: a tile whose farthest stored depth is nearer than "
-               "a face is skipped before any of its pixels is tested.",
+               "a triangle is skipped before any of its pixels is tested.",
     .scene = "city",
     .rasterizer = &HIERARCHICAL_ZBUFFER,
     .depth_rule = {"depth buffer", "z_w", "face", SMALLER_IS_NEARER}, /* unorm24, standard */
     .extras = &EXTRAS,
-    .report = print_counts,
+    .report = print_shading,
 };
 
 int main(int argc, char **argv)
@@ -41,18 +40,18 @@ int main(int argc, char **argv)
     int status = run_load(&run, &LESSON, argc, argv); /* load: the command line, the scene */
     if (status != RUN_GO)
         return status;
-    EarlyZ z = early_z_chosen(&run);                   /* lesson 08: --z-mode, --sort, --bug */
-    HierarchicalZ h = {.exact = exact_chosen(&run),    /* --hiz-update */
-                       .count_skipped = true};         /* the summary counts what it skips */
+    EarlyZ z = early_z_chosen(&run);                   /* --z-mode, --sort, --bug */
+    HierarchicalZ h = {.exact = exact_chosen(&run), .count_skipped = true}; /* --hiz-update */
     if (!early_z_begin(&z, &run, &run.err) ||          /* the buffers; draw through z */
-        !hiz_begin(&h, &run.target, tile_chosen(&run), &run.err)) /* the tiles, --tile */
+        !hiz_begin(&h, &run.target, tile_chosen(&run), &run.err)) { /* the tiles, --tile */
         run.status = EXIT_RUN_FAILED;
-    else {
-        run.rz->clear(&run.target);                    /* clear: the far plane, every tile read */
-        if (run_draw(&run) &&                          /* draw: tile by tile, the hidden skipped */
-            run_write(&run))                           /* write: the pictures asked for */
-            run_report(&run);                          /* report: the summary, the counts */
+        early_z_free(&z);
+        return run_end(&run);
     }
+    run.rz->clear(&run.target);                        /* clear: the far plane, every tile */
+    if (run_draw(&run) &&                              /* draw: tile by tile, hidden skipped */
+        run_write(&run))                               /* write: the pictures asked for */
+        run_report(&run);                              /* report: the summary, the counts */
     status = run_end(&run);
     hiz_free(&h);
     early_z_free(&z);

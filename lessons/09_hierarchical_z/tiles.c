@@ -1,15 +1,10 @@
 /* tiles.c: lesson 09's rasterizer, in place of lesson 04's scanline.c behind
- * scanline.h's draw_polygon and draw_face (docs/09_hierarchical_z.md).
- *
- * A triangle is drawn tile by tile over its box. A tile it covers at all
- * first asks the tile buffer (hierarchical_z.c) whether any fragment there
- * could pass; if none could, the tile is skipped and its pixels are never
- * tested. In the others, a pixel is covered when its centre lies inside
- * all three edges, or on a left or a top one: lesson 04's [left, right) and
- * [top, bottom), said with edge functions in the same fixed point, so the
- * same pixels. A polygon (a triangle cut by the near or far plane) is drawn
- * as its fan of triangles: draw_face_as_polygons does that when
- * draw_polygon declines it. */
+ * scanline.h (docs/09_hierarchical_z.md). A triangle is drawn tile by tile:
+ * each tile it touches first asks the tile buffer (hierarchical_z.c) whether
+ * any fragment there could pass; if none could, its pixels are never tested.
+ * Coverage is lesson 04's [left, right) and [top, bottom) said with edge
+ * functions in the same fixed point: the same pixels. A polygon (a triangle
+ * cut by the near or far plane) is drawn as its fan of triangles. */
 #include <math.h>
 
 #include "hierarchical_z.h"
@@ -20,24 +15,28 @@
 #define HALF ((int64_t)SUBPIXEL_HALF)
 
 /* Edge a -> b of a triangle going clockwise on the screen (y down):
- *     E(px, py) = (bx - ax)(py - ay) - (by - ay)(px - ax)   (sub-pixel units)
- * is > 0 inside. A pixel centre on a left edge (going up) or a top edge
- * (level, going right) is covered, so those get E + 1: covered is E > 0.
- * At the centre of pixel (x, y): E = at + x step_x + y step_y. */
+ * E(px, py) = (bx - ax)(py - ay) - (by - ay)(px - ax) (sub-pixel units) is
+ * > 0 inside. A centre on a left edge (going up) or a top edge (level, going
+ * right) is covered: those get E + 1. At pixel (x, y), at + x step_x + y step_y. */
 typedef struct { int64_t at, step_x, step_y; } EdgeFunction;
 
 static int64_t snap(double pixels) { return (int64_t)floor(pixels * S + 0.5); }
 
+/* The first pixel (from 0) whose centre is at or after v, in sub-pixel
+ * units; the last (below n) whose centre is at or before v; E at a pixel. */
+static int first_pixel(int64_t v) { return v < HALF ? 0 : (int)((v - HALF + S - 1) / S); }
+static int last_pixel(int64_t v, int n)
+{
+    return v < HALF ? -1 : (v - HALF) / S < n ? (int)((v - HALF) / S) : n - 1;
+}
 static int64_t edge_at(const EdgeFunction *e, int x, int y)
 {
     return e->at + x * e->step_x + y * e->step_y;
 }
 
-/* How the triangle covers pixels x0..x1, y0..y1: none (one edge has them
- * all outside), all (every edge has them all inside), or some. E is
- * affine, so its least and greatest values there are at corners. */
+/* How the triangle covers pixels x0..x1, y0..y1: none, all or some. E is
+ * affine: its least and greatest values there are at corners. */
 typedef enum { NONE, SOME, ALL } Cover;
-
 static Cover cover_of(const EdgeFunction e[3], int x0, int y0, int x1, int y1)
 {
     Cover c = ALL;
@@ -53,12 +52,10 @@ static Cover cover_of(const EdgeFunction e[3], int x0, int y0, int x1, int y1)
 
 /* The covered pixels of x0..x1, y0..y1, row by row: in each row of a
  * triangle they are one run, first to last. Each is tested by lesson 06's
- * depth_test or, in a skipped tile, only counted. Returns the farthest
- * value they hold afterwards (the largest, or the smallest if reversed). */
-static float draw_tile(Target *t, const EdgeFunction e[3], int x0, int y0, int x1, int y1,
-                       int face, Cover cover, bool skip)
+ * depth_test or, in a skipped tile, only counted. */
+static void draw_tile(Target *t, const EdgeFunction e[3], int x0, int y0, int x1, int y1,
+                      int face, Cover cover, bool skip)
 {
-    float hi = -INFINITY, lo = INFINITY;
     for (int y = y0; y <= y1; y++) {
         int first = x0, last = x1;
         if (cover == SOME) {
@@ -71,16 +68,9 @@ static float draw_tile(Target *t, const EdgeFunction e[3], int x0, int y0, int x
                 }
         }
         size_t row = (size_t)y * (size_t)t->width;
-        if (skip && first <= last)
-            t->hiz->fragments_skipped += (unsigned long long)(last - first + 1);
-        for (size_t i = row + (size_t)first; !skip && first <= last && i <= row + (size_t)last; i++)
-            depth_test(t, i, face, 0.0f);
-        for (size_t i = row + (size_t)first; first <= last && i <= row + (size_t)last; i++) {
-            hi = t->depth[i] > hi ? t->depth[i] : hi;
-            lo = t->depth[i] < lo ? t->depth[i] : lo;
-        }
+        for (size_t i = row + (size_t)first; first <= last && i <= row + (size_t)last; i++)
+            skip ? t->hiz->fragments_skipped++ : depth_test(t, i, face, 0.0f);
     }
-    return t->depth_setup->mapping == REVERSED ? lo : hi;
 }
 
 static bool corner_in_range(const ScreenVertex *v)
@@ -89,8 +79,7 @@ static bool corner_in_range(const ScreenVertex *v)
            fabs(v->x) <= SCANLINE_MAX_COORD && fabs(v->y) <= SCANLINE_MAX_COORD;
 }
 
-/* A triangle, either winding, drawn tile by tile. False for anything else
- * (drawn as triangles instead), as for lesson 04 a polygon out of range. */
+/* A triangle, either winding, tile by tile; false for anything else (drawn as triangles). */
 bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
 {
     (void)far; /* lesson 05 clipped at the far plane: no fragment lies beyond */
@@ -99,9 +88,12 @@ bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
         return n < 3;
     if (!convex_on_screen(v, 3, SUBPIXEL_ONE, &turn) || turn == 0)
         return true; /* no area */
-    int64_t x[3], y[3];
-    for (int i = 0; i < 3; i++) /* snapped, in clockwise order */
+    int64_t x[3], y[3], x_lo = INT64_MAX, y_lo = INT64_MAX, x_hi = INT64_MIN, y_hi = INT64_MIN;
+    for (int i = 0; i < 3; i++) { /* snapped, in clockwise order; their range */
         x[i] = snap(v[turn > 0 ? i : 2 - i].x), y[i] = snap(v[turn > 0 ? i : 2 - i].y);
+        x_lo = x[i] < x_lo ? x[i] : x_lo, x_hi = x[i] > x_hi ? x[i] : x_hi;
+        y_lo = y[i] < y_lo ? y[i] : y_lo, y_hi = y[i] > y_hi ? y[i] : y_hi;
+    }
     EdgeFunction e[3];
     for (int i = 0; i < 3; i++) {
         int64_t dx = x[(i + 1) % 3] - x[i], dy = y[(i + 1) % 3] - y[i];
@@ -109,23 +101,18 @@ bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
                                   (dy < 0 || (dy == 0 && dx > 0)), -dy * S, dx * S};
     }
     /* The box: the pixels whose centres lie in the corners' range, on the screen. */
-    int64_t lo_x = x[0] < x[1] ? x[0] : x[1], lo_y = y[0] < y[1] ? y[0] : y[1];
-    int64_t hi_x = x[0] > x[1] ? x[0] : x[1], hi_y = y[0] > y[1] ? y[0] : y[1];
-    lo_x = x[2] < lo_x ? x[2] : lo_x, lo_y = y[2] < lo_y ? y[2] : lo_y;
-    hi_x = x[2] > hi_x ? x[2] : hi_x, hi_y = y[2] > hi_y ? y[2] : hi_y;
-    int bx0 = (int)(lo_x < HALF ? 0 : (lo_x - HALF + S - 1) / S);
-    int by0 = (int)(lo_y < HALF ? 0 : (lo_y - HALF + S - 1) / S);
-    int bx1 = hi_x < HALF ? -1 : (int)((hi_x - HALF) / S < t->width ? (hi_x - HALF) / S : t->width - 1);
-    int by1 = hi_y < HALF ? -1 : (int)((hi_y - HALF) / S < t->height ? (hi_y - HALF) / S : t->height - 1);
+    int bx0 = first_pixel(x_lo), by0 = first_pixel(y_lo);
+    int bx1 = last_pixel(x_hi, t->width), by1 = last_pixel(y_hi, t->height);
     HierarchicalZ *h = t->hiz;
     int side = h ? h->tile : 8;
     for (int ty = by0 / side; by0 <= by1 && ty <= by1 / side; ty++)
         for (int tx = bx0 / side; bx0 <= bx1 && tx <= bx1 / side; tx++) {
-            int x0 = (int)fmax(tx * side, bx0), x1 = (int)fmin(tx * side + side - 1, bx1);
-            int y0 = (int)fmax(ty * side, by0), y1 = (int)fmin(ty * side + side - 1, by1);
+            int tile_x1 = tx * side + side - 1 < t->width ? tx * side + side - 1 : t->width - 1;
+            int tile_y1 = ty * side + side - 1 < t->height ? ty * side + side - 1 : t->height - 1;
+            int x0 = tx * side > bx0 ? tx * side : bx0, x1 = tile_x1 < bx1 ? tile_x1 : bx1;
+            int y0 = ty * side > by0 ? ty * side : by0, y1 = tile_y1 < by1 ? tile_y1 : by1;
             int k = h ? ty * h->tiles_x + tx : 0;
-            bool whole = x0 == tx * side && x1 == (int)fmin(tx * side + side, t->width) - 1 &&
-                         y0 == ty * side && y1 == (int)fmin(ty * side + side, t->height) - 1;
+            bool whole = x0 == tx * side && y0 == ty * side && x1 == tile_x1 && y1 == tile_y1;
             Cover cover = cover_of(e, x0, y0, x1, y1);
             if (cover == NONE)
                 continue;
@@ -138,16 +125,14 @@ bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
             /* SOLUTION END */
             if (skip && !h->count_skipped)
                 continue;
-            float far_after = draw_tile(t, e, x0, y0, x1, y1, face, cover, skip);
+            draw_tile(t, e, x0, y0, x1, y1, face, cover, skip);
             /* SOLUTION BEGIN: then keep it up to date: a tile the triangle covered
-             * whole holds, everywhere, what was just tested there; any other, read
-             * again (exact) or left with its old farthest value, still a bound. */
-            if (h && !skip && cover == ALL && whole)
-                h->far[k] = far_after;
-            else if (h && !skip && h->exact)
+             * whole has just had every pixel tested: read it again (and with
+             * --hiz-update exact any tile); others keep their bound. */
+            if (h && !skip && ((cover == ALL && whole) || h->exact))
                 hiz_read_tile(h, t, k);
             /* SOLUTION STUB
-            (void)far_after;
+            (void)whole; (void)k;
             */
             /* SOLUTION END */
         }
@@ -159,3 +144,19 @@ void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
 {
     draw_face_as_polygons(t, f, ctx, draw_polygon);
 }
+
+/* Lesson 07's face (a decal biased), drawn by the functions above; it is
+ * skipped whole when every tile it asked was. */
+static void draw_tiled_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+{
+    HierarchicalZ *h = t->hiz;
+    unsigned long long tested = h ? h->tiles_tested : 0, skipped = h ? h->tiles_skipped : 0;
+    DEPTH_BIAS_ZBUFFER.draw_face(t, f, ctx);
+    if (h && h->tiles_tested > tested && h->tiles_tested - tested == h->tiles_skipped - skipped)
+        h->faces_skipped++;
+}
+
+const Rasterizer HIERARCHICAL_ZBUFFER = {
+    .clear = hiz_clear, .draw_face = draw_tiled_face, .stored_to_depth = stored_to_depth,
+    .clips = true,
+};

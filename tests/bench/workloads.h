@@ -16,7 +16,7 @@
  *   mesh                a torus knot of 200,000 triangles seen by the knot
  *                       scene's camera at 1920x1080 (projected when built,
  *                       so drawing it is screen-space work like the others)
- *   city                the built-in scene city (a tower drawn first, 600
+ *   city                the built-in scene city (a wall drawn first, 510
  *                       small buildings behind it) by its camera, 1024x768:
  *                       most fragments are hidden (lesson 09)
  *

@@ -69,7 +69,7 @@ EarlyZ early_z_chosen(const Run *run)
 int tile_chosen(const Run *run)
 {
     const char *tile = run->opt.extra[FLAG_TILE];
-    return tile ? atoi(tile) : TILE_DEFAULT; /* checked by choose() */
+    return tile ? atoi(tile) : 8; /* checked by choose() */
 }
 
 bool exact_chosen(const Run *run)
@@ -155,7 +155,7 @@ static bool choose(Run *run, Error *err)
         return error_set(err, "--steps does not apply to %s (the work it counts is per "
                               "fragment, not per face: see --shade-count-out)", run->lesson->program);
     long tile;
-    if (x[FLAG_TILE] && !parse_int("--tile", x[FLAG_TILE], 1, TILE_MAX, &tile, err))
+    if (x[FLAG_TILE] && !parse_int("--tile", x[FLAG_TILE], 1, 64, &tile, err))
         return false;
     if (x[FLAG_HIZ_UPDATE] && strcmp(x[FLAG_HIZ_UPDATE], "exact") != 0 &&
         strcmp(x[FLAG_HIZ_UPDATE], "conservative") != 0)

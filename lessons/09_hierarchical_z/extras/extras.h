@@ -1,8 +1,6 @@
 /* extras.h: what lesson 09 shows but does not teach (docs/09_hierarchical_z.md):
- *   --tile N: the side of a tile; --hiz-out: the tile buffer as a picture;
- *   lesson 08's --z-mode, --sort, --bug early-z-with-discard, its shader's
- *   picture (--colour-out) and heat map (--shade-count-out), and the
- *   plumbing that runs its shader on every fragment (fragments.c). */
+ *   --tile, --hiz-update, --hiz-out (the tile buffer as a picture), and
+ *   lesson 08's flags, shader, heat map and plumbing (fragments.c). */
 #ifndef EXTRAS_H
 #define EXTRAS_H
 
@@ -13,9 +11,7 @@
 extern const Extras EXTRAS;
 
 EarlyZ early_z_chosen(const Run *run); /* unorm24, standard; the mode, sort and bug */
-#define TILE_DEFAULT 8
-#define TILE_MAX 64 /* a row of a tile is one 64-bit mask (tiles.c) */
-int tile_chosen(const Run *run); /* --tile, TILE_DEFAULT when not given */
+int tile_chosen(const Run *run);   /* --tile, 8 when not given */
 bool exact_chosen(const Run *run); /* --hiz-update exact */
 const char *z_mode_name(ZMode mode);
 const char *sort_name(SortOrder sort);
@@ -38,9 +34,7 @@ void early_z_free(EarlyZ *z);
 Rgb heat_colour(uint32_t times);
 bool write_heat_map(const uint32_t *count, int width, int height, const char *path, Error *err);
 
-/* --hiz-out: each tile in the grey of its farthest view depth d (near
- * bright), the far plane in the depth pictures' background, and a legend. */
-#define HIZ_LEGEND_HEIGHT 22
+#define HIZ_LEGEND_HEIGHT 22 /* --hiz-out, each tile in the grey of its farthest d */
 bool write_hiz_picture(const Target *t, const char *path, Error *err);
 
 #endif
