@@ -155,7 +155,7 @@ echo "make-doc-images: 08_early_z done"
 # are neither tested nor shaded).
 make -s BUILD="$build" "$build/bin/09_hierarchical_z"
 l09="$build/bin/09_hierarchical_z"
-"$l09" --out "$images/09_city.png" --hiz-out "$images/09_tiles.png" \
+"$l09" --out "$build/09.png" --hiz-out "$images/09_tiles.png" \
        --world-out "$images/09_world.png" >/dev/null
 "$l08" --scene city --z-mode late --out "$build/08.png" \
        --shade-count-out "$images/09_heat_08.png" >/dev/null

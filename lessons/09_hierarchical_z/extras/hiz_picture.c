@@ -1,7 +1,8 @@
 /* hiz_picture.c: --hiz-out, the tile buffer as a picture (extras.h). Every
  * pixel of a tile shows the tile's farthest value as a view depth d, in the
- * greys of --shade depth (near bright, linear in 1/d); a tile that still
- * holds the far plane somewhere shows the depth pictures' background. The
+ * greys of --shade depth (near bright, linear in 1/d); a tile whose value
+ * is still the far plane (a pixel not drawn, or a bound never brought
+ * nearer) shows the depth pictures' background. The
  * last column and row of each tile are darker, so the tiles show. Under
  * the picture, a legend: the ramp from the nearest d to the farthest. */
 #include "extras.h"
