@@ -13,7 +13,7 @@ static bool farther(const DepthSetup *s, float a, float b)
     return s->mapping == REVERSED ? a < b : a > b;
 }
 
-/* One tile buffer for the target, t->hiz; every tile is read at the clear. */
+/* One tile buffer for the target, t->hiz; every tile is set at the clear. */
 bool hiz_begin(HierarchicalZ *h, Target *t, int tile, Error *err)
 {
     h->tile = tile;
@@ -41,32 +41,29 @@ void hiz_read_tile(HierarchicalZ *h, const Target *t, int k)
     h->far[k] = far;
 }
 
-/* Lesson 06's clear, then every tile holds the far plane in all its pixels. */
-void hiz_clear(Target *t)
+void hiz_clear(Target *t) /* lesson 06's: every pixel, so every tile, holds the far plane */
 {
     clear_depth(t);
     for (int k = 0; t->hiz && k < t->hiz->tiles_x * t->hiz->tiles_y; k++)
-        hiz_read_tile(t->hiz, t, k);
+        t->hiz->far[k] = t->depth[0];
 }
 
-/* The nearest value the triangle's plane can store over pixels x0..x1,
- * y0..y1. z_w is affine, so its nearest is at a corner of the rectangle: the
- * one the slopes point away from. A pixel's z_w is the plane evaluated in
- * float32 (lesson 06), a few roundings away from the exact value here: the
- * bound moves 2^-20 of the terms' size nearer, more than those roundings. */
-float hiz_nearest(const DepthSetup *s, int x0, int y0, int x1, int y1)
+/* The nearest (or farthest) value the triangle's plane can store over pixels
+ * x0..x1, y0..y1: z_w is affine, so at the corner the slopes point to (or
+ * away from). A pixel's z_w is the plane in float32 (lesson 06), a few
+ * roundings from the value here: the bound moves out by 2^-20 of the terms. */
+float hiz_bound(const DepthSetup *s, int x0, int y0, int x1, int y1, bool nearest)
 {
-    bool reversed = s->mapping == REVERSED; /* nearest: the largest z_w */
+    bool largest = (s->mapping == REVERSED) == nearest; /* nearest: the largest z_w if reversed */
     double a = s->plane.a0, gx = s->plane.gx, gy = s->plane.gy;
-    double x = (gx < 0) != reversed ? x1 : x0, y = (gy < 0) != reversed ? y1 : y0;
+    double x = (gx > 0) == largest ? x1 : x0, y = (gy > 0) == largest ? y1 : y0;
     double z = a + gx * x + gy * y + s->offset;
     double margin = (fabs(a) + fabs(gx * x) + fabs(gy * y) + fabs((double)s->offset)) * 0x1p-20;
-    return encode_depth(s->format, (float)(reversed ? z + margin : z - margin));
+    return encode_depth(s->format, (float)(largest ? z + margin : z - margin));
 }
 
-/* A tile is skipped when even the polygon's nearest value is farther than
- * the farthest the tile holds: every fragment there would fail. (Not on a
- * tie: lesson 08's prepass draws again where depth is equal.) */
+/* Skipped when even the nearest value is farther than the tile's farthest: every
+ * fragment there would fail (not on a tie: lesson 08's prepass draws on equal). */
 bool hiz_skips(const Target *t, int tile, float nearest)
 {
     bool skip = farther(t->depth_setup, nearest, t->hiz->far[tile]);
@@ -74,7 +71,12 @@ bool hiz_skips(const Target *t, int tile, float nearest)
     return skip;
 }
 
-void hiz_free(HierarchicalZ *h)
+/* A triangle covered all of the tile: each pixel kept its value or took the
+ * triangle's, so none is farther than the plane's farthest value there. */
+void hiz_covered(const Target *t, int tile, float farthest)
 {
-    free(h->far), h->far = NULL;
+    float *far = &t->hiz->far[tile];
+    *far = farther(t->depth_setup, *far, farthest) ? farthest : *far;
 }
+
+void hiz_free(HierarchicalZ *h) { free(h->far), h->far = NULL; }

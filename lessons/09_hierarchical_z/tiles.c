@@ -1,10 +1,8 @@
 /* tiles.c: lesson 09's rasterizer, in place of lesson 04's scanline.c behind
- * scanline.h (docs/09_hierarchical_z.md). A triangle is drawn tile by tile:
- * each tile it touches first asks the tile buffer (hierarchical_z.c) whether
- * any fragment there could pass; if none could, its pixels are never tested.
- * Coverage is lesson 04's [left, right) and [top, bottom) said with edge
- * functions in the same fixed point: the same pixels. A polygon (a triangle
- * cut by the near or far plane) is drawn as its fan of triangles. */
+ * scanline.h (docs/09_hierarchical_z.md). Each tile of a triangle's box first
+ * asks the tile buffer (hierarchical_z.c) whether any fragment there could
+ * pass; if none could, its pixels are never tested. Coverage is lesson 04's,
+ * in edge functions of the same fixed point; a cut triangle is drawn as a fan. */
 #include <math.h>
 
 #include "hierarchical_z.h"
@@ -34,8 +32,7 @@ static int64_t edge_at(const EdgeFunction *e, int x, int y)
     return e->at + x * e->step_x + y * e->step_y;
 }
 
-/* How the triangle covers pixels x0..x1, y0..y1: none, all or some. E is
- * affine: its least and greatest values there are at corners. */
+/* How the triangle covers pixels x0..x1, y0..y1: none, all or some (E is affine). */
 typedef enum { NONE, SOME, ALL } Cover;
 static Cover cover_of(const EdgeFunction e[3], int x0, int y0, int x1, int y1)
 {
@@ -50,26 +47,26 @@ static Cover cover_of(const EdgeFunction e[3], int x0, int y0, int x1, int y1)
     return c;
 }
 
-/* The covered pixels of x0..x1, y0..y1, row by row: in each row of a
- * triangle they are one run, first to last. Each is tested by lesson 06's
- * depth_test or, in a skipped tile, only counted. */
+/* The covered pixels of x0..x1, y0..y1, row by row (one run in each), each
+ * tested by lesson 06's depth_test, or in a skipped tile only counted. */
 static void draw_tile(Target *t, const EdgeFunction e[3], int x0, int y0, int x1, int y1,
                       int face, Cover cover, bool skip)
 {
     for (int y = y0; y <= y1; y++) {
         int first = x0, last = x1;
-        if (cover == SOME) {
+        if (cover == SOME) { /* the run: from the first pixel inside to the next outside */
             int64_t a = edge_at(&e[0], x0, y), b = edge_at(&e[1], x0, y), c = edge_at(&e[2], x0, y);
-            first = x1 + 1, last = x0 - 1;
-            for (int x = x0; x <= x1; x++, a += e[0].step_x, b += e[1].step_x, c += e[2].step_x)
-                if ((a > 0) & (b > 0) & (c > 0)) {
-                    first = first > x1 ? x : first;
-                    last = x;
-                }
+            for (; first <= x1 && !((a > 0) & (b > 0) & (c > 0)); first++)
+                a += e[0].step_x, b += e[1].step_x, c += e[2].step_x;
+            for (last = first; last <= x1 && (a > 0) & (b > 0) & (c > 0); last++)
+                a += e[0].step_x, b += e[1].step_x, c += e[2].step_x;
+            last--;
         }
         size_t row = (size_t)y * (size_t)t->width;
-        for (size_t i = row + (size_t)first; first <= last && i <= row + (size_t)last; i++)
-            skip ? t->hiz->fragments_skipped++ : depth_test(t, i, face, 0.0f);
+        if (skip)
+            t->hiz->fragments_skipped += (unsigned)(last - first + 1);
+        for (size_t i = row + (size_t)first; !skip && first <= last && i <= row + (size_t)last; i++)
+            depth_test(t, i, face, 0.0f);
     }
 }
 
@@ -105,37 +102,42 @@ bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
     int bx1 = last_pixel(x_hi, t->width), by1 = last_pixel(y_hi, t->height);
     HierarchicalZ *h = t->hiz;
     int side = h ? h->tile : 8;
-    for (int ty = by0 / side; by0 <= by1 && ty <= by1 / side; ty++)
+    float nearest = h ? hiz_bound(t->depth_setup, bx0, by0, bx1, by1, true) : 0; /* in the box */
+    for (int ty = by0 / side; by0 <= by1 && ty <= by1 / side; ty++) {
+        int ty0 = ty * side, ty1 = ty0 + side - 1 < t->height ? ty0 + side - 1 : t->height - 1;
+        int y0 = ty0 > by0 ? ty0 : by0, y1 = ty1 < by1 ? ty1 : by1;
+        int run = -1; /* from x = run, tiles covered whole, drawn together as long rows */
         for (int tx = bx0 / side; bx0 <= bx1 && tx <= bx1 / side; tx++) {
-            int tile_x1 = tx * side + side - 1 < t->width ? tx * side + side - 1 : t->width - 1;
-            int tile_y1 = ty * side + side - 1 < t->height ? ty * side + side - 1 : t->height - 1;
-            int x0 = tx * side > bx0 ? tx * side : bx0, x1 = tile_x1 < bx1 ? tile_x1 : bx1;
-            int y0 = ty * side > by0 ? ty * side : by0, y1 = tile_y1 < by1 ? tile_y1 : by1;
+            int tx0 = tx * side, tx1 = tx0 + side - 1 < t->width ? tx0 + side - 1 : t->width - 1;
+            int x0 = tx0 > bx0 ? tx0 : bx0, x1 = tx1 < bx1 ? tx1 : bx1;
             int k = h ? ty * h->tiles_x + tx : 0;
-            bool whole = x0 == tx * side && y0 == ty * side && x1 == tile_x1 && y1 == tile_y1;
-            Cover cover = cover_of(e, x0, y0, x1, y1);
-            if (cover == NONE)
-                continue;
-            /* SOLUTION BEGIN: ask the tile buffer first: the plane's nearest value over
-             * this part of the tile against the farthest the tile holds. */
-            bool skip = h && hiz_skips(t, k, hiz_nearest(t->depth_setup, x0, y0, x1, y1));
+            /* SOLUTION BEGIN: ask the tile buffer first: can any fragment here pass? */
+            bool skip = h && hiz_skips(t, k, nearest);
             /* SOLUTION STUB
-            bool skip = false;
+            bool skip = false; (void)nearest, (void)k;
             */
             /* SOLUTION END */
-            if (skip && !h->count_skipped)
-                continue;
-            draw_tile(t, e, x0, y0, x1, y1, face, cover, skip);
-            /* SOLUTION BEGIN: then keep it up to date: a tile the triangle covered
-             * whole has just had every pixel tested: read it again (and with
-             * --hiz-update exact any tile); others keep their bound. */
-            if (h && !skip && ((cover == ALL && whole) || h->exact))
+            Cover cover = skip && !h->count_skipped ? NONE : cover_of(e, x0, y0, x1, y1);
+            bool joins = cover == ALL && !skip && !(h && h->exact);
+            if (run >= 0 && !joins)
+                draw_tile(t, e, run, y0, x0 - 1, y1, face, ALL, false), run = -1;
+            if (joins && run < 0)
+                run = x0;
+            else if (!joins && cover != NONE)
+                draw_tile(t, e, x0, y0, x1, y1, face, cover, skip);
+            /* SOLUTION BEGIN: then keep it up to date: a tile the triangle covers whole
+             * holds nothing farther than the plane's farthest value there. */
+            if (h && !skip && h->exact)
                 hiz_read_tile(h, t, k);
+            else if (h && !skip && cover == ALL && x0 == tx0 && x1 == tx1 && y0 == ty0 && y1 == ty1)
+                hiz_covered(t, k, hiz_bound(t->depth_setup, x0, y0, x1, y1, false));
             /* SOLUTION STUB
-            (void)whole; (void)k;
             */
             /* SOLUTION END */
         }
+        if (run >= 0)
+            draw_tile(t, e, run, y0, bx1, y1, face, ALL, false);
+    }
     return true;
 }
 
@@ -145,15 +147,10 @@ void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
     draw_face_as_polygons(t, f, ctx, draw_polygon);
 }
 
-/* Lesson 07's face (a decal biased), drawn by the functions above; it is
- * skipped whole when every tile it asked was. */
+/* Lesson 07's face (a decal biased), drawn by the functions above. */
 static void draw_tiled_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
 {
-    HierarchicalZ *h = t->hiz;
-    unsigned long long tested = h ? h->tiles_tested : 0, skipped = h ? h->tiles_skipped : 0;
     DEPTH_BIAS_ZBUFFER.draw_face(t, f, ctx);
-    if (h && h->tiles_tested > tested && h->tiles_tested - tested == h->tiles_skipped - skipped)
-        h->faces_skipped++;
 }
 
 const Rasterizer HIERARCHICAL_ZBUFFER = {

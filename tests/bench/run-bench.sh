@@ -110,7 +110,17 @@ END {
                   (l ~ /^04/) ? 0.40 : 0.20)
         if (w == "small" && l != "limit")
             check(l " small, million triangles per second", row_tri_rate[r], 3)
+        if (l ~ /^08_/)
+            med08[w] = row_med[r]
+        if (l ~ /^09_/)
+            med09[w] = row_med[r]
     }
+    # Lesson 09 against lesson 08 (docs/09_hierarchical_z.md): the time of 08 over that of 09.
+    if (("city" in med08) && ("city" in med09))
+        check("09 on city, times as fast as 08", med08["city"] / med09["city"], 3)
+    if (("fill_back_to_front" in med08) && ("fill_back_to_front" in med09))
+        check("09 on fill_back_to_front, times as fast as 08 (nothing hidden)", \
+              med08["fill_back_to_front"] / med09["fill_back_to_front"], 1 / 1.1)
 }' "$raw"
 rm -f "$raw"
 echo

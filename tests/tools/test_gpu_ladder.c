@@ -60,7 +60,7 @@ static void compare_faces(const char *a, const char *b, long *covered, long *dif
 static void ladder_bands_agree_with_the_gpu(void **state)
 {
     (void)state;
-    const char *dir = test_dir("gpu_ladder");
+    const char *dir = test_dir("gpu_ladder_test");
     Path lid = in_dir(dir, "lesson_id.png"), gid = in_dir(dir, "gpu_id.png");
     Path out = in_dir(dir, "lesson.png");
     for (int f = 0; f < 3; f++)

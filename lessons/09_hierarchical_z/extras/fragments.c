@@ -77,7 +77,11 @@ void draw_shaded_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
         memcpy(z->saved_face + at, t->face + at, len * sizeof *t->face);
         memcpy(z->saved_tests + at, t->overdraw + at, len * sizeof *t->overdraw);
     }
+    HierarchicalZ *h = t->hiz;
+    unsigned long long tested = h->tiles_tested, skipped = h->tiles_skipped;
     HIERARCHICAL_ZBUFFER.draw_face(t, f, ctx); /* lesson 09 draws the face */
+    if (h->tiles_tested > tested && h->tiles_tested - tested == h->tiles_skipped - skipped)
+        h->faces_skipped++; /* every tile it asked was skipped */
     bool cutout = mesh_face_in(z->mesh, f->face, "cutout");
     Rgb lit = face_flat_colour(z->mesh, z->camera, f->face);
     for (int y = b.y0; y < b.y1; y++)
@@ -86,7 +90,6 @@ void draw_shaded_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
             if (t->overdraw[i] != z->saved_tests[i])
                 fragment(z, t, i, x, y, f->face, cutout, lit);
         }
-    HierarchicalZ *h = t->hiz;
     for (int ty = b.y0 / h->tile; (cutout || z->pass == 2) && ty * h->tile < b.y1; ty++)
         for (int tx = b.x0 / h->tile; tx * h->tile < b.x1; tx++)
             hiz_read_tile(h, t, ty * h->tiles_x + tx);
