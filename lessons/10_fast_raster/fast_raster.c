@@ -183,8 +183,8 @@ static void draw_block(TileWork *w, const Poly *p, int x0, int y0, uint64_t mask
     /* SOLUTION BEGIN: lesson 09's question, per block: the plane's nearest
      * value over the block's part of the box against the block's farthest. */
     DepthSetup plane = plane_setup(&p->depth);
-    if (h && hiz_skips(&w->view, k, hiz_nearest(&plane, imax(x0, p->x0), imax(y0, p->y0),
-                                                imin(x0 + LAST, p->x1 - 1), imin(y0 + LAST, p->y1 - 1))))
+    int x1 = imin(x0 + LAST, p->x1 - 1), y1 = imin(y0 + LAST, p->y1 - 1);
+    if (h && hiz_skips(&w->view, k, hiz_nearest(&plane, imax(x0, p->x0), imax(y0, p->y0), x1, y1)))
         return;
     /* SOLUTION END */
     const BlockKernels *kernels = p->plain || x0 + BLOCK_SIZE > t->width ? &PLAIN_KERNELS : w->k;
