@@ -33,7 +33,7 @@ override WARN := -std=c11 -Wall -Wextra $(if $(filter 1,$(GRADE_WARNINGS_SHOWN))
                  -Wshadow -Wconversion -Wmissing-prototypes
 override REQUIRED_CFLAGS   := $(WARN) -ffp-contract=off
 override REQUIRED_CPPFLAGS := -D_POSIX_C_SOURCE=200809L -Icommon
-override REQUIRED_LDLIBS   := -lm
+override REQUIRED_LDLIBS   := -lm -pthread
 # What make sanitize and make fuzz add to every compile and link.
 MODE_CFLAGS :=
 
@@ -330,7 +330,8 @@ BENCH_LINK     = $(BENCH_CFLAGS) -Wno-maybe-uninitialized
 BENCH_TABLE   := 02_zbuffer=ZBUFFER 03_perspective_z=ZBUFFER \
                  04_scanline_inverse_z=SCANLINE_ZBUFFER 05_clipping=CLIPPING_ZBUFFER \
                  06_depth_precision=DEPTH_PRECISION_ZBUFFER 07_depth_bias=DEPTH_BIAS_ZBUFFER \
-                 08_early_z=DEPTH_BIAS_ZBUFFER 09_hierarchical_z=HIERARCHICAL_ZBUFFER
+                 08_early_z=DEPTH_BIAS_ZBUFFER 09_hierarchical_z=HIERARCHICAL_ZBUFFER \
+                 10_fast_raster=FAST_ZBUFFER
 BENCH_TABLE   := $(filter $(LESSONS:%=%=%),$(BENCH_TABLE))
 BENCH_LESSONS := $(foreach e,$(BENCH_TABLE),$(firstword $(subst =, ,$(e))))
 bench_rasterizer = $(lastword $(subst =, ,$(filter $(1)=%,$(BENCH_TABLE))))
@@ -358,9 +359,15 @@ $(BENCH_DIR)/obj/%.o: %.c | $(DEPS_OK)
 
 $(BENCH_DIR)/obj/bench_%.o: tests/bench/bench.c | $(DEPS_OK)
 	@mkdir -p $(@D)
-	$(CC) $(REQUIRED_CPPFLAGS) -Itests/bench -Ilessons/$* $(CPPFLAGS) $(BENCH_CFLAGS) \
+	$(CC) $(REQUIRED_CPPFLAGS) -Itests/bench -Ilessons/$* $(CPPFLAGS) $(BENCH_CFLAGS) $(BENCH_DEFS) \
 	    -DBENCH_RASTERIZER=$(call bench_rasterizer,$*) -DBENCH_LESSON='"$*"' \
 	    -DBENCH_LESSON_NUMBER=$(patsubst 0%,%,$(firstword $(subst _, ,$*))) -MMD -MP -c $< -o $@
+
+# Lesson 10 is timed in two rows, one thread and all cores, its depth buffer
+# unorm24 as llvmpipe's (tests/bench/bench_setup.h, fast_raster_setup.c).
+$(BENCH_DIR)/obj/bench_10_fast_raster.o: BENCH_DEFS := -DBENCH_SETUP
+$(BENCH_DIR)/obj/tests/bench/fast_raster_setup.o: OBJ_INCLUDES += -Ilessons/10_fast_raster
+$(BENCH_DIR)/bench_10_fast_raster: $(BENCH_DIR)/obj/tests/bench/fast_raster_setup.o
 
 $(BENCH_DIR)/obj/gpu/%.o: OBJ_INCLUDES += $(GL_CFLAGS)
 $(BENCH_DIR)/obj/gpu/bench_llvmpipe.o $(BENCH_DIR)/obj/gpu/gl.o: | $(GPU_DEPS_OK)

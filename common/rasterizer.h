@@ -24,8 +24,7 @@ typedef struct {
 
 /* What draw_face needs besides the target and the face. */
 typedef struct {
-    double near, far; /* the camera's planes: a fragment with d > far is
-                         discarded before its depth test */
+    double near, far; /* the camera's planes: a fragment with d > far is discarded */
 } DrawContext;
 
 /* The lesson's depth buffer, in three functions. */
@@ -34,6 +33,7 @@ typedef struct {
     void (*draw_face)(Target *t, const ScreenFace *f, const DrawContext *ctx);
     double (*stored_to_depth)(const Target *t, float stored); /* as d; NULL: it holds d */
     bool clips; /* clips itself (05): render_faces drops only faces wholly behind near */
+    void (*finish)(Target *t); /* NULL but lesson 10's: draws the faces it held back */
 } Rasterizer;
 
 /* True when every corner's x, y and d is a finite number: draw_face draws

@@ -177,8 +177,8 @@ bool render_faces(Render *r, Target *t, const Rasterizer *rz, const int *order, 
                   FaceDrawnFn after_face, void *data, Error *err)
 {
     DrawContext ctx = {.near = r->camera.near, .far = r->camera.far};
-    int n = order ? count : r->mesh.nfaces;
-    for (int k = 0; k < n; k++) {
+    int n = order ? count : r->mesh.nfaces, k;
+    for (k = 0; k < n; k++) {
         int i = order ? order[k] : k;
         if (i < 0 || i >= r->mesh.nfaces)
             continue;
@@ -200,9 +200,11 @@ bool render_faces(Render *r, Target *t, const Rasterizer *rz, const int *order, 
         r->counts.faces_drawn++;
         r->counts.tris_drawn += ntris;
         if (after_face && !after_face(data, t, &f, err))
-            return false;
+            break;
     }
-    return true;
+    if (rz->finish)
+        rz->finish(t);
+    return k == n;
 }
 
 float *render_view_depth(const Target *t, const Rasterizer *rz)

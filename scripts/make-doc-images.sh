@@ -167,3 +167,11 @@ echo "make-doc-images: 09_hierarchical_z done"
 make -s BUILD="$build" "$build/tools/diagrams"
 "$build/tools/diagrams" "$images"
 echo "make-doc-images: diagrams done"
+
+# ---- 10_fast_raster: the crowd, and the chart of what each step gains, from
+# the times measured with make bench (docs/data/10_steps.csv, the page's table)
+make -s BUILD="$build" "$build/bin/10_fast_raster" "$build/tools/bar_chart"
+"$build/bin/10_fast_raster" --scene crowd --out "$images/10_crowd.png" >/dev/null
+"$build/tools/bar_chart" docs/data/10_steps.csv "$images/10_steps.png" \
+    "ms per frame, 1 thread but where marked (less is faster)"
+echo "make-doc-images: 10_fast_raster done"

@@ -27,6 +27,10 @@
 #if BENCH_LESSON_NUMBER >= 9
 #include "hierarchical_z.h"
 #endif
+/* Lesson 10 is timed in more than one set-up (its threads): bench_setup.h. */
+#ifdef BENCH_SETUP
+#include "bench_setup.h"
+#endif
 
 #ifndef BENCH_RASTERIZER
 #error "compile with -DBENCH_RASTERIZER=<the lesson's Rasterizer>"
@@ -41,15 +45,25 @@ extern const Rasterizer BENCH_RASTERIZER;
  * The warm-up counts (Target.counting): the fragments tested come from it.
  * The timed repetitions count nothing, as a renderer that is asked for no
  * counts would draw (docs/performance.md, "What counting costs"). */
-static bool measure_workload(const Rasterizer *rz, const Workload *w, int reps,
+static bool measure_workload(const Rasterizer *rz, const Workload *w, int reps, int config,
                              Measurement *m, Error *err)
 {
     Target t;
+    static char name[64] = BENCH_LESSON;
+    bool wall_clock = false;
     if (!target_init(&t, w->width, w->height, err))
         return false;
-#if BENCH_LESSON_NUMBER >= 6
+#ifdef BENCH_SETUP
+    if (!bench_configure(&t, config, name, (int)sizeof name, &wall_clock)) {
+        target_free(&t);
+        return error_set(err, "out of memory for the set-up of %s", BENCH_LESSON);
+    }
+#elif BENCH_LESSON_NUMBER >= 6
+    (void)config;
     DepthSetup setup = depth_setup(UNORM24, STANDARD, w->ctx.near, w->ctx.far);
     t.depth_setup = &setup;
+#else
+    (void)config;
 #endif
 #if BENCH_LESSON_NUMBER >= 9
     HierarchicalZ hiz = {0};
@@ -63,9 +77,11 @@ static bool measure_workload(const Rasterizer *rz, const Workload *w, int reps,
     for (int k = -BENCH_WARMUP; k < reps; k++) {
         target_reset(&t, rz->clear);
         t.counting = k < 0;
-        double start = now_seconds();
+        double start = wall_clock ? now_wall_seconds() : now_seconds();
         workload_draw(w, &t, rz);
-        double elapsed = now_seconds() - start;
+        if (rz->finish) /* a rasterizer that holds faces back draws them now */
+            rz->finish(&t);
+        double elapsed = (wall_clock ? now_wall_seconds() : now_seconds()) - start;
         uint64_t sum = depth_checksum(&t);
         if (k < 0) {
             m->checksum = sum;
@@ -82,7 +98,7 @@ static bool measure_workload(const Rasterizer *rz, const Workload *w, int reps,
     if (!same)
         return error_set(err, "%s: repetitions of '%s' left different depth buffers",
                          BENCH_LESSON, w->name);
-    m->lesson = BENCH_LESSON;
+    m->lesson = name;
     m->workload = w->name;
     m->width = w->width;
     m->height = w->height;
@@ -101,23 +117,30 @@ int main(int argc, char **argv)
     if (usage != 0)
         return usage;
 
+#ifdef BENCH_SETUP
+    int configs = bench_configs(); /* rows per workload */
+#else
+    int configs = 1;
+#endif
     for (int k = 0; k < WORKLOAD_COUNT; k++) {
         if (any && !chosen[k])
             continue;
         Workload w;
         Measurement m;
         Error err;
-        bool ok = workload_build(&w, (WorkloadKind)k, &err);
-        if (ok) {
-            ok = measure_workload(&BENCH_RASTERIZER, &w, reps, &m, &err);
-            workload_free(&w);
+        bool built = workload_build(&w, (WorkloadKind)k, &err), ok = built;
+        for (int c = 0; ok && c < configs; c++) {
+            ok = measure_workload(&BENCH_RASTERIZER, &w, reps, c, &m, &err);
+            if (ok)
+                measure_print(stdout, &m);
+            fflush(stdout);
         }
+        if (built)
+            workload_free(&w);
         if (!ok) {
             fprintf(stderr, "%s: error: %s\n", program, err.msg);
             return 1;
         }
-        measure_print(stdout, &m);
-        fflush(stdout);
     }
     return 0;
 }

@@ -12,6 +12,13 @@ double now_seconds(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
+double now_wall_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
 void target_reset(Target *t, void (*clear)(Target *t))
 {
     size_t n = (size_t)t->width * (size_t)t->height;

@@ -41,6 +41,9 @@ typedef struct {
 /* Seconds of CPU time this thread has used. Not the wall clock: on a busy
  * machine the time other programs get would count as ours. */
 double now_seconds(void);
+/* Seconds of the wall clock: for threads working together (lesson 10's
+ * rows with more than one), whose CPU times add up. */
+double now_wall_seconds(void);
 
 /* Back to the state target_init leaves: depth = clear, no face, no counts. */
 void target_reset(Target *t, void (*clear)(Target *t));

@@ -99,12 +99,18 @@ END {
         }
     }
     print ""
-    print "targets (single-threaded):"
+    print "targets (single-threaded, but the N-thread rows of lesson 10):"
     for (r = 1; r <= rows; r++) {
         l = row_lesson[r]
         w = row_workload[r]
         if (l ~ /^llvmpipe_/)
             continue
+        # Lesson 10 (the targets of the issue): 1.5 times llvmpipe on one thread,
+        # and at least llvmpipe on all cores, each with as many threads.
+        if (l == "10_fast_raster_1t" && (w in gpu1))
+            check(l " " w ", speed / llvmpipe_1t", gpu1[w] / row_med[r], 1.5)
+        if (l ~ /^10_fast_raster_[0-9]+t$/ && l != "10_fast_raster_1t" && (w in gpuN))
+            check(l " " w ", speed / " gpuN_name, gpuN[w] / row_med[r], 1.0)
         if (w == "fill_back_to_front" && l != "limit")
             check(l " fill_back_to_front, fraction of the limit", row_ratio[r],
                   (l ~ /^04/) ? 0.40 : 0.20)

@@ -1,0 +1,105 @@
+/* clip.c: lesson 05's clipping, step by step (clip.h, and docs/05_clipping.md). */
+#include "clip.h"
+
+#include <math.h>
+
+#include "polygon.h"
+#include "scanline.h"
+
+/* How far p lies inside the plane: 0 on it, negative outside; linear in clip space. */
+double plane_distance(Vec4 p, ClipPlane plane)
+{
+    return plane == NEAR_PLANE ? p.z + p.w : p.w - p.z;
+}
+
+/* Where the edge from in (d_in > 0) to out (d_out < 0) meets the plane; always
+ * from the inside corner, so two faces sharing the edge get the same point. */
+Vec4 plane_crossing(Vec4 in, double d_in, Vec4 out, double d_out)
+{
+    double s = d_in / (d_in - d_out);
+    return vec4(in.x + s * (out.x - in.x), in.y + s * (out.y - in.y),
+                in.z + s * (out.z - in.z), in.w + s * (out.w - in.w));
+}
+
+/* Sutherland-Hodgman against one plane: walk the edges a -> b; keep every
+ * corner inside or on the plane, and add a corner where an edge crosses it.
+ * Returns how many corners out holds (fewer than 3: nothing is left). */
+int clip_to_plane(const Vec4 *in, int n, ClipPlane plane, Vec4 *out)
+{
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+        Vec4 a = in[(i + n - 1) % n], b = in[i];
+        double da = plane_distance(a, plane), db = plane_distance(b, plane);
+        if (da > 0 && db < 0)
+            out[m++] = plane_crossing(a, da, b, db); /* going out */
+        else if (da < 0 && db > 0)
+            out[m++] = plane_crossing(b, db, a, da); /* coming in */
+        if (db >= 0)
+            out[m++] = b;
+    }
+    return m;
+}
+
+/* The near plane, then the far plane. out holds CLIP_MAX_OUT(n) corners. */
+int clip_polygon(const Vec4 *in, int n, Vec4 *out)
+{
+    Vec4 kept[CLIP_MAX_OUT(CLIP_MAX_IN) / 2];
+    return clip_to_plane(kept, clip_to_plane(in, n, NEAR_PLANE, kept), FAR_PLANE, out);
+}
+
+/* The divide by w_c and the viewport, as camera_project does them: a corner
+ * no plane moved lands exactly where lesson 04 puts it. */
+ScreenVertex clip_to_screen(Vec4 c, int width, int height)
+{
+    double x_ndc = c.x / c.w, y_ndc = c.y / c.w;
+    return (ScreenVertex){(x_ndc + 1) * width / 2, (1 - y_ndc) * height / 2, c.w};
+}
+
+/* A convex polygon in clip space: clipped, divided, and drawn by lesson 04. */
+static void draw_clipped_polygon(Target *t, const Vec4 *corners, int n, int face,
+                                 const DrawContext *ctx)
+{
+    Vec4 kept[CLIP_MAX_OUT(CLIP_MAX_IN)];
+    ScreenVertex v[CLIP_MAX_OUT(CLIP_MAX_IN)];
+    Tri fan[CLIP_MAX_OUT(CLIP_MAX_IN)];
+    int m = clip_polygon(corners, n, kept);
+    for (int i = 0; i < m; i++) {
+        v[i] = clip_to_screen(kept[i], t->width, t->height);
+        fan[i] = (Tri){{0, i + 1, i + 2}};
+    }
+    ScreenFace f = {.face = face, .n = m, .v = v, .tris = fan, .convex = true};
+    if (m >= 3)
+        draw_face_as_polygons(t, &f, ctx, draw_polygon);
+}
+
+/* One face: as lesson 04 draws it when no plane cuts it (or it was made on
+ * the screen); otherwise clipped whole if convex, else triangle by triangle. */
+void draw_clipped_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+{
+    bool cut = false;
+    for (int i = 0; f->clip && i < f->n; i++)
+        cut = cut || !(plane_distance(f->clip[i], NEAR_PLANE) >= 0 &&
+                       plane_distance(f->clip[i], FAR_PLANE) >= 0);
+    if (!cut)
+        draw_face(t, f, ctx);
+    else if (f->convex && f->n <= CLIP_MAX_IN)
+        draw_clipped_polygon(t, f->clip, f->n, f->face, ctx);
+    else
+        for (int k = 0; k < f->n - 2; k++) {
+            const int *c = f->tris[k].c;
+            Vec4 tri[3] = {f->clip[c[0]], f->clip[c[1]], f->clip[c[2]]};
+            draw_clipped_polygon(t, tri, 3, f->face, ctx);
+        }
+}
+
+/* A stored 1/d back as the view depth d; 0 (nothing drawn) is infinitely far. */
+static double stored_to_depth(const Target *t, float stored)
+{
+    (void)t;
+    return stored > 0 ? 1.0 / stored : INFINITY;
+}
+
+const Rasterizer CLIPPING_ZBUFFER = {
+    .clear = clear_depth, .draw_face = draw_clipped_face, .stored_to_depth = stored_to_depth,
+    .clips = true,
+};

@@ -1,0 +1,76 @@
+/* depth_bias.c: lesson 07, depth bias (polygon offset), step by step
+ * (depth_format.h, docs/07_depth_bias.md). A decal and its base have the same
+ * z_w on paper, but each triangle's plane is set up from its own corners and
+ * rounded on its own (lesson 06): either can come out nearer. So every
+ * fragment of the decal moves by o toward the camera. */
+#include "depth_format.h"
+
+#include <math.h>
+
+#include "clip.h"
+#include "scanline.h"
+
+
+/* m: the steepest slope of z_w on the screen. Over a triangle z_w is the
+ * plane z_w = a0 + gx x + gy y (lesson 06), so m = max(|gx|, |gy|), as OpenGL
+ * and Vulkan allow in place of sqrt(gx^2 + gy^2), and GPUs do. */
+double depth_slope(const DepthPlane *p)
+{
+    return fmax(fabs((double)p->gx), fabs((double)p->gy));
+}
+
+/* r: the smallest difference of z_w the format resolves on this face: unorm n
+ * bits, one code, 1/(2^n - 1); float32, 2^(e - 23) with e the exponent of the
+ * face's largest |z_w| = 1.f x 2^e (OpenGL, Vulkan, Direct3D): depth_quantum. */
+double resolvable_difference(const DepthSetup *s, const ScreenVertex *v, int n)
+{
+    double largest = 0;
+    for (int k = 0; k < n; k++)
+        largest = fmax(largest, fabs(window_depth(s, v[k].d)));
+    return depth_quantum(s->format, largest);
+}
+
+/* o = m FACTOR + r UNITS. A clamp other than 0 limits it as Direct3D's
+ * DepthBiasClamp and Vulkan's depthBiasClamp do: to at most the clamp when
+ * it is positive, to at least the clamp when it is negative. */
+double polygon_offset(const DepthBias *bias, double m, double r)
+{
+    double o = m * bias->factor + r * bias->units;
+    return bias->clamp > 0 ? fmin(o, bias->clamp) : bias->clamp < 0 ? fmax(o, bias->clamp) : o;
+}
+
+/* The face's corners on the screen, as its triangles are set up: clipped at
+ * near and far (clip.c) and divided, or as they are for a face made there. */
+static int face_on_screen(const Target *t, const ScreenFace *f, ScreenVertex *v)
+{
+    Vec4 kept[CLIP_MAX_OUT(CLIP_MAX_IN)];
+    if (f->n > CLIP_MAX_IN)
+        return 0; /* none: a face of so many corners gets no bias */
+    int n = f->clip ? clip_polygon(f->clip, f->n, kept) : f->n;
+    for (int k = 0; k < n; k++)
+        v[k] = f->clip ? clip_to_screen(kept[k], t->width, t->height) : f->v[k];
+    return n;
+}
+
+/* One face: a decal is drawn with its o, m from its plane (its triangles lie
+ * in one) and r from its corners; any other face with o = 0, exactly as
+ * lesson 06 draws it. */
+static void draw_biased_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+{
+    DepthSetup *s = t->depth_setup;
+    ScreenVertex v[CLIP_MAX_OUT(CLIP_MAX_IN)];
+    int n;
+    if (s->bias.mesh && mesh_face_in(s->bias.mesh, f->face, "decal") &&
+        (n = face_on_screen(t, f, v)) >= 3) {
+        DepthPlane p = depth_plane(s, v);
+        s->offset = (float)polygon_offset(&s->bias, depth_slope(&p),
+                                          resolvable_difference(s, v, n));
+    }
+    draw_triangles(t, f, ctx);
+    s->offset = 0;
+}
+
+const Rasterizer DEPTH_BIAS_ZBUFFER = {
+    .clear = clear_depth, .draw_face = draw_biased_face, .stored_to_depth = stored_to_depth,
+    .clips = true,
+};

@@ -1,0 +1,74 @@
+/* depth_format.h: lesson 06, the depth buffer as a GPU keeps it
+ * (docs/06_depth_precision.md).
+ *
+ *   stored value   window depth z_w in [0, 1], in a format:
+ *                    unorm16, unorm24  the integer code round(z_w (2^bits - 1))
+ *                    float32           z_w itself, a float
+ *   mapping        standard  z_w = f/(f-n) (1 - n/d): 0 at near, 1 at far
+ *                  reversed  z_w = n/(f-n) (f/d - 1): 1 at near, 0 at far;
+ *                            with far = inf, z_w = n/d
+ *   cleared to     1 (standard) or 0 (reversed): the far plane
+ *   a fragment     wins when its value < stored (standard), > stored
+ *                  (reversed); a tie keeps the first one drawn
+ * Both mappings are z_w = a + b/d, affine in 1/d, so affine on the screen.
+ * In the precision a GPU uses, all float32: each corner's z_w = z_c / w_c
+ * (z_c = a w_c + b, w_c = d), then each triangle's plane of z_w, evaluated
+ * at every pixel centre the scanline covers. The target carries its buffer's
+ * setup (Target.depth_setup), set before clear_depth.
+ * Lesson 07 (docs/07_depth_bias.md): a face in `decal` adds o = m FACTOR +
+ * r UNITS to z_w, m its steepest slope on the screen, r one step of the
+ * format there. */
+#ifndef DEPTH_FORMAT_H
+#define DEPTH_FORMAT_H
+
+#include <stddef.h>
+
+#include "rasterizer.h"
+
+typedef enum { UNORM16, UNORM24, FLOAT32 } DepthFormat;
+typedef enum { STANDARD, REVERSED } DepthMapping;
+
+/* A triangle's z_w on the screen, as a GPU sets it up, in float32:
+ * z_w = a0 + gx x + gy y at the centre of pixel (x, y). */
+typedef struct {
+    float a0, gx, gy;
+} DepthPlane;
+
+typedef struct {
+    double factor, units, clamp; /* --polygon-offset FACTOR,UNITS, --offset-clamp */
+    const Mesh *mesh;            /* whose faces in `decal` get it */
+} DepthBias;
+
+typedef struct DepthSetup {
+    DepthFormat format;
+    DepthMapping mapping;
+    double near, far; /* far may be INFINITY with REVERSED */
+    double a, b;      /* z_w = a + b / d */
+    DepthPlane plane; /* of the triangle being drawn */
+    float offset;     /* added to its z_w: o on a decal, else 0 */
+    DepthBias bias;
+} DepthSetup;
+
+/* The steps, in the order depth_buffer.c takes them (each is explained there). */
+DepthSetup depth_setup(DepthFormat format, DepthMapping mapping, double near, double far);
+double window_depth(const DepthSetup *s, double d);  /* z_w of view depth d */
+double view_depth(const DepthSetup *s, double z_w);  /* and back */
+float encode_depth(DepthFormat format, float z_w);   /* what the buffer stores */
+double decode_depth(DepthFormat format, float stored);
+double depth_quantum(DepthFormat format, double z_w); /* one step of z_w there */
+double depth_step(const DepthSetup *s, double d);     /* ... and of d, in world units */
+DepthPlane depth_plane(const DepthSetup *s, const ScreenVertex v[3]); /* a triangle's */
+void draw_triangles(Target *t, const ScreenFace *f, const DrawContext *ctx); /* each with its plane */
+double stored_to_depth(const Target *t, float stored); /* a stored value back as d */
+/* Lesson 07's steps (depth_bias.c): m, r and o of a face. */
+double depth_slope(const DepthPlane *p);
+double resolvable_difference(const DepthSetup *s, const ScreenVertex *v, int n);
+double polygon_offset(const DepthBias *bias, double m, double r);
+
+/* clear_depth, then every triangle clipped (clip.c) and drawn by lesson 04's
+ * scanline into the buffer of z_w, its depth from its plane. */
+extern const Rasterizer DEPTH_PRECISION_ZBUFFER;
+/* The same, but a face in `decal` drawn with its o (depth_bias.c). */
+extern const Rasterizer DEPTH_BIAS_ZBUFFER;
+
+#endif

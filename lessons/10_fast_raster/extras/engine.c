@@ -1,0 +1,399 @@
+/* engine.c: lesson 10's plumbing, shown but not taught (engine.h): the
+ * bins' memory; each face set up as lesson 07 sets it up; lesson 04's
+ * corners and its walk down a polygon that reaches the far plane; one
+ * fragment at a time in plain C, counted for --overdraw-out and --trace. */
+#include "engine.h"
+#include "held.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#include "clip.h"
+#include "guard_band.h"
+
+#define S ((int64_t)SUBPIXEL_ONE)
+#define HALF_PIXEL ((int64_t)SUBPIXEL_HALF)
+#define CUTOUT_KEEPS 0xf0f0f0f00f0f0f0full /* lesson 08's cutout_keeps, in any block */
+
+uint64_t popcount(uint64_t m) /* the bits set, without a CPU instruction for it */
+{
+    m -= (m >> 1) & 0x5555555555555555ull;
+    m = (m & 0x3333333333333333ull) + ((m >> 2) & 0x3333333333333333ull);
+    return ((m + (m >> 4)) & 0x0f0f0f0f0f0f0f0full) * 0x0101010101010101ull >> 56;
+}
+
+int64_t snap(double pixels)
+{
+    double v = pixels * S + 0.5; /* |v| < 2^30 (SCANLINE_MAX_COORD): a cast is exact */
+    int64_t i = (int64_t)v;
+    return (double)i > v ? i - 1 : i;
+}
+
+/* ---- The bins ---------------------------------------------------------- */
+
+/* Room for need items in *items of *cap; false (nothing changed) without. */
+static bool grow(void **items, size_t *cap, size_t need, size_t size)
+{
+    size_t more = *cap ? *cap : 1024;
+    while (more < need)
+        more *= 2;
+    void *bigger = need <= *cap ? *items : realloc(*items, more * size);
+    if (bigger && need > *cap)
+        *items = bigger, *cap = more;
+    return bigger != NULL;
+}
+
+bool bins_room(Bins *b, const Poly *p, int n)
+{
+    void *poly = b->poly, *edge = b->edge, *corner = b->corner;
+    bool ok = grow(&poly, &b->cap_poly, b->npoly + 1, sizeof *b->poly) &&
+              grow(&edge, &b->cap_edge, b->nedge + (size_t)n, sizeof *b->edge) &&
+              grow(&corner, &b->cap_corner, b->ncorner + (size_t)n, sizeof *b->corner);
+    b->poly = poly, b->edge = edge, b->corner = corner;
+    for (int ty = p->y0 / TILE_SIZE; ok && ty <= (p->y1 - 1) / TILE_SIZE; ty++)
+        for (int tx = p->x0 / TILE_SIZE; ok && tx <= (p->x1 - 1) / TILE_SIZE; tx++) {
+            Bin *bin = &b->bin[ty * b->tiles_x + tx];
+            void *at = bin->at;
+            ok = grow(&at, &bin->cap, bin->n + 1, sizeof *bin->at);
+            bin->at = at;
+        }
+    return ok;
+}
+
+void bins_empty(Bins *b)
+{
+    for (Bins *next; b; b = next) {
+        for (int k = 0; k < b->tiles_x * b->tiles_y; k++)
+            b->bin[k].n = 0;
+        b->npoly = b->nedge = b->ncorner = 0;
+        next = b->next, b->next = NULL; /* the chain is made anew at each finish */
+    }
+}
+
+bool tile_busy(const Bins *b, int tile)
+{
+    for (; b; b = b->next)
+        if (b->bin[tile].n > 0)
+            return true;
+    return false;
+}
+
+void bins_free(Bins *b)
+{
+    for (int k = 0; b && k < b->tiles_x * b->tiles_y; k++)
+        free(b->bin[k].at);
+    if (b)
+        free(b->bin), free(b->poly), free(b->edge), free(b->corner);
+    free(b);
+}
+
+/* The bins of target t, drawing what waits for another target first. */
+Bins *bins_of(Target *t)
+{
+    FastRaster *fr = (FastRaster *)t->depth_setup;
+    Bins *b = fr->bins;
+    if (b && b->target != t && b->npoly > 0)
+        fast_finish((Target *)b->target);
+    int tiles_x = (t->width + TILE_SIZE - 1) / TILE_SIZE;
+    int tiles_y = (t->height + TILE_SIZE - 1) / TILE_SIZE;
+    if (!b || b->tiles_x != tiles_x || b->tiles_y != tiles_y) {
+        bins_free(b);
+        fr->bins = b = calloc(1, sizeof *b);
+        if (b && !(b->bin = calloc((size_t)(tiles_x * tiles_y), sizeof *b->bin)))
+            free(b), fr->bins = b = NULL;
+        if (b)
+            b->tiles_x = tiles_x, b->tiles_y = tiles_y;
+    }
+    if (b)
+        b->target = t;
+    return b;
+}
+
+FastRaster fast_raster(DepthSetup depth, Simd simd, int threads, bool count)
+{
+    return (FastRaster){.depth = depth, .simd = simd, .threads = threads, .count = count,
+                        .keep = ~(uint64_t)0};
+}
+
+void fast_raster_free(FastRaster *fr)
+{
+    bins_empty(fr->bins); /* unchained: the held faces' bins are freed with them */
+    bins_free(fr->bins);
+    fr->bins = NULL;
+    held_free(fr);
+}
+
+/* ---- Lesson 07's set-up of a face -------------------------------------- */
+
+/* Triangle tri of f when no plane cuts it, it lies inside the guard band
+ * and it is no decal: what lesson 07 does with it, without its copies. Its
+ * plane from its corners as clip_to_screen puts them (triangle_plane), its
+ * coverage from the face's own (draw_clipped_face). False: not so simple. */
+static bool draw_simple_triangle(Target *t, const ScreenFace *f, const Tri *tri, double far)
+{
+    ScreenVertex v[3], on[3];
+    for (int j = 0; j < 3; j++) {
+        v[j] = f->v[tri->c[j]], on[j] = v[j];
+        if (!(isfinite(v[j].x) && isfinite(v[j].y) && isfinite(v[j].d) && v[j].d > 0))
+            return false;
+        if (!f->clip)
+            continue;
+        Vec4 c = f->clip[tri->c[j]];
+        if (!(plane_distance(c, NEAR_PLANE) >= 0 && plane_distance(c, FAR_PLANE) >= 0))
+            return false;
+        on[j] = clip_to_screen(c, t->width, t->height);
+    }
+    if (!guard_band_contains(on, 3, t->width, t->height) ||
+        !guard_band_contains(v, 3, t->width, t->height))
+        return false;
+    t->depth_setup->plane = depth_plane(t->depth_setup, on);
+    draw_polygon(t, v, 3, f->face, far); /* refused: lesson 07 draws nothing either */
+    return true;
+}
+
+/* A face with threads: held back; else (or when it cannot be) set up now. */
+void draw_fast_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+{
+    FastRaster *fr = (FastRaster *)t->depth_setup;
+    if (fr->count || fr->threads < 2 || fr->set_up_only || !hold_face(t, f, ctx))
+        set_up_face(t, f, ctx);
+}
+
+/* A face: a decal as lesson 07 draws it, any other triangle by triangle
+ * (lesson 07's draw_triangles for a triangle that is not simple). */
+void set_up_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+{
+    static const Tri first = {{0, 1, 2}};
+    FastRaster *fr = (FastRaster *)t->depth_setup;
+    const Mesh *m = fr->depth.bias.mesh;
+    fr->keep = m && mesh_face_in(m, f->face, "cutout") ? CUTOUT_KEEPS : ~(uint64_t)0;
+    if (m && mesh_face_in(m, f->face, "decal")) {
+        DEPTH_BIAS_ZBUFFER.draw_face(t, f, ctx);
+        return;
+    }
+    for (int k = 0; k < f->n - 2; k++) {
+        if (draw_simple_triangle(t, f, &f->tris[k], ctx->far))
+            continue;
+        ScreenVertex v[3];
+        Vec4 clip[3];
+        for (int j = 0; j < 3; j++) {
+            v[j] = f->v[f->tris[k].c[j]];
+            clip[j] = f->clip ? f->clip[f->tris[k].c[j]] : vec4(0, 0, 0, 0);
+        }
+        ScreenFace one = {.face = f->face, .n = 3, .v = v, .tris = &first, .convex = true,
+                          .clip = f->clip ? clip : NULL};
+        draw_triangles(t, &one, ctx);
+    }
+}
+
+/* ---- Lesson 04's corners and walk -------------------------------------- */
+
+void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+{
+    draw_face_as_polygons(t, f, ctx, draw_polygon);
+}
+
+bool corner_in_range(const ScreenVertex *v)
+{
+    return isfinite(v->x) && isfinite(v->y) && isfinite(v->d) && v->d > 0 &&
+           fabs(v->x) <= SCANLINE_MAX_COORD && fabs(v->y) <= SCANLINE_MAX_COORD;
+}
+
+/* Snapping moves a corner by up to 1/512 pixel; its 1/d moves along the
+ * polygon's plane in (x, y, 1/d), as lesson 04 moves it. */
+void corners_on_plane(Corner *c, const ScreenVertex *v, int n)
+{
+    double w0 = c[0].inv_d, nx = 0, ny = 0, nz = 0;
+    for (int i = 1; i + 1 < n; i++) {
+        double ax = v[i].x - v[0].x, ay = v[i].y - v[0].y, aw = c[i].inv_d - w0;
+        double bx = v[i + 1].x - v[0].x, by = v[i + 1].y - v[0].y, bw = c[i + 1].inv_d - w0;
+        nx += ay * bw - aw * by;
+        ny += aw * bx - ax * bw;
+        nz += ax * by - ay * bx;
+    }
+    for (int i = 0; nz != 0 && i < n; i++) {
+        double dx = (double)c[i].x / S - v[i].x, dy = (double)c[i].y / S - v[i].y;
+        double change = -(nx * dx + ny * dy) / nz;
+        if (fabs(change) < c[i].inv_d)
+            c[i].inv_d += change;
+    }
+}
+
+static int64_t first_row_at_or_below(int64_t y) { return ceil_div(y - HALF_PIXEL, S); }
+
+bool edge_setup(Edge *e, int64_t ax, int64_t ay, double inv_a, int64_t bx, int64_t by,
+                double inv_b, int y_first)
+{
+    int64_t dx = bx - ax, dy = by - ay;
+    if (dy <= 0)
+        return false;
+    int64_t y0 = first_row_at_or_below(ay);
+    y0 = y0 < y_first ? y_first : y0;
+    e->y_end = (int)first_row_at_or_below(by);
+    if (y0 >= e->y_end)
+        return false;
+    int64_t yc = y0 * S + HALF_PIXEL, num = (ax - HALF_PIXEL) * dy + (yc - ay) * dx;
+    e->den = S * dy;
+    e->x_pixel = ceil_div(num, e->den);
+    e->rem = e->x_pixel * e->den - num;
+    e->step_pixel = floor_div(dx, dy);
+    e->step_rem = S * dx - e->step_pixel * e->den;
+    e->inv_d_step = (inv_b - inv_a) / ((double)dy / S);
+    e->inv_d = inv_a + ((double)(yc - ay) / S) * e->inv_d_step;
+    return true;
+}
+
+void edge_step(Edge *e)
+{
+    e->x_pixel += e->step_pixel;
+    e->rem -= e->step_rem;
+    if (e->rem < 0)
+        e->rem += e->den, e->x_pixel++;
+    e->inv_d += e->inv_d_step;
+}
+
+typedef struct { const Corner *c; int n, at, bottom, dir; } Chain;
+
+static bool chain_next_edge(Chain *c, int y, Edge *e)
+{
+    while (c->at != c->bottom) {
+        int next = (c->at + c->dir + c->n) % c->n;
+        Corner a = c->c[c->at], b = c->c[next];
+        c->at = next;
+        if (edge_setup(e, a.x, a.y, a.inv_d, b.x, b.y, b.inv_d, y))
+            return true;
+    }
+    return false;
+}
+
+/* Row y of lesson 04's span: 1/d stepped from its first pixel on the screen
+ * as there, but only the tile's pixels tested. */
+static void walk_span(TileWork *w, const Poly *p, int y, const Edge *left, const Edge *right)
+{
+    int64_t x_first = left->x_pixel < 0 ? 0 : left->x_pixel;
+    int64_t x_stop = right->x_pixel > w->tx1 ? w->tx1 : right->x_pixel;
+    double left_frac = (double)left->rem / (double)left->den;
+    double width = (double)(right->x_pixel - left->x_pixel) + left_frac -
+                   (double)right->rem / (double)right->den;
+    double step = width > 0 ? (right->inv_d - left->inv_d) / width : 0.0;
+    double inv_d = left->inv_d + ((double)(x_first - left->x_pixel) + left_frac) * step;
+    for (int64_t x = x_first; x < x_stop; x++, inv_d += step)
+        if (x >= w->tx0 && inv_d >= p->inv_far)
+            test_pixel(w, &p->depth, (int)x, y);
+}
+
+/* Lesson 04's walk_edges from the polygon's first row on the screen down to
+ * the tile's last, its spans drawn in the tile's rows. */
+void walk_in_tile(TileWork *w, const Poly *p, const Corner *c)
+{
+    int n = (int)p->n, top = 0, bottom = 0;
+    for (int i = 1; i < n; i++) {
+        top = c[i].y < c[top].y ? i : top;
+        bottom = c[i].y > c[bottom].y ? i : bottom;
+    }
+    Chain forward = {c, n, top, bottom, +1}, backward = {c, n, top, bottom, -1};
+    Chain *lc = p->turn > 0 ? &backward : &forward, *rc = p->turn > 0 ? &forward : &backward;
+    int64_t y_first = first_row_at_or_below(c[top].y), y_stop = first_row_at_or_below(c[bottom].y);
+    y_first = y_first < 0 ? 0 : y_first;
+    y_stop = y_stop > w->ty1 ? w->ty1 : y_stop;
+    Edge left, right;
+    if (y_first >= y_stop || !chain_next_edge(lc, (int)y_first, &left) ||
+        !chain_next_edge(rc, (int)y_first, &right))
+        return;
+    for (int y = (int)y_first; y < y_stop; y++) {
+        if ((y >= left.y_end && !chain_next_edge(lc, y, &left)) ||
+            (y >= right.y_end && !chain_next_edge(rc, y, &right)))
+            return;
+        if (y >= w->ty0)
+            walk_span(w, p, y, &left, &right);
+        edge_step(&left);
+        edge_step(&right);
+    }
+}
+
+/* ---- One fragment; a block's farthest value ---------------------------- */
+
+/* The fragment at (x, y): z_w in lesson 06's order, its test, its write
+ * unless a cutout discards it; counted by target_record when counting. */
+bool test_pixel(TileWork *w, const BlockDepth *d, int x, int y)
+{
+    Target *t = w->t;
+    size_t i = (size_t)y * (size_t)t->width + (size_t)x;
+    float z_w = d->a0 + d->gx * (float)x + d->gy * (float)y + d->offset;
+    float value = encode_depth(d->format, z_w), stored = t->depth[i];
+    bool passed = d->reversed ? value > stored : value < stored;
+    if (w->fr->count)
+        target_record(t, i, d->face, value, stored, passed);
+    else
+        w->stats.tested++, w->stats.passed += passed;
+    if (passed && (d->keep >> ((y % BLOCK_SIZE) * BLOCK_SIZE + x % BLOCK_SIZE) & 1)) {
+        t->depth[i] = value;
+        t->face[i] = d->face;
+    }
+    return passed;
+}
+
+BlockDepth block_depth(const FastRaster *fr, int face, bool *plain)
+{
+    const DepthSetup *s = &fr->depth;
+    BlockDepth d = {s->plane.a0, s->plane.gx, s->plane.gy, s->offset,
+                    s->format == UNORM16 ? 65535.0f : s->format == UNORM24 ? 16777215.0f : 0,
+                    s->mapping == REVERSED, face, fr->keep, s->format};
+    *plain = !(isfinite(d.a0) && isfinite(d.gx) && isfinite(d.gy) && isfinite(d.offset));
+    return d;
+}
+
+/* ---- Hierarchical Z, lesson 09's ---------------------------------------- */
+
+DepthSetup plane_setup(const BlockDepth *d)
+{
+    return (DepthSetup){.format = d->format, .mapping = d->reversed ? REVERSED : STANDARD,
+                        .plane = {d->a0, d->gx, d->gy}, .offset = d->offset};
+}
+
+/* A thread's work: its own copy of the tile buffer's counts (hiz_skips adds
+ * to them), the buffer itself shared: no two threads draw the same tile. A
+ * tile buffer of other tiles than blocks is not used. */
+void tile_work_begin(TileWork *w, Target *t, const FastRaster *fr)
+{
+    *w = (TileWork){.t = t, .fr = fr, .k = kernels_of(fr->count ? SIMD_NONE : fr->simd)};
+    w->view = *t;
+    w->view.hiz = t->hiz && t->hiz->tile == BLOCK_SIZE ? &w->hiz : NULL;
+    if (w->view.hiz)
+        w->hiz = *t->hiz, w->hiz.tiles_tested = w->hiz.tiles_skipped = 0;
+}
+
+void tile_work_end(TileWork *w)
+{
+    Target *t = w->t;
+    if (w->view.hiz)
+        t->hiz->tiles_tested += w->hiz.tiles_tested, t->hiz->tiles_skipped += w->hiz.tiles_skipped;
+    if (!t->counting)
+        return;
+    t->stats.tested += w->stats.tested;
+    t->stats.passed += w->stats.passed;
+    t->stats.failed += w->stats.tested - w->stats.passed;
+}
+
+void tile_read_again(TileWork *w)
+{
+    HierarchicalZ *h = w->view.hiz;
+    for (int y0 = w->ty0; h && y0 < w->ty1; y0 += BLOCK_SIZE)
+        for (int x0 = w->tx0; x0 < w->tx1; x0 += BLOCK_SIZE)
+            hiz_read_tile(h, w->t, y0 / BLOCK_SIZE * h->tiles_x + x0 / BLOCK_SIZE);
+}
+
+uint64_t long_edge_coverage(const EdgeFn *e, int64_t at)
+{
+    uint64_t mask = 0;
+    for (int bit = 0; bit < 64; bit++)
+        mask |= (uint64_t)(at + (int64_t)e->a * (bit % 8) + (int64_t)e->b * (bit / 8) >= 0) << bit;
+    return mask;
+}
+
+/* Nothing waits any more: the picture starts again. */
+void clear_fast(Target *t)
+{
+    bins_empty(((FastRaster *)t->depth_setup)->bins);
+    hiz_clear(t);
+}

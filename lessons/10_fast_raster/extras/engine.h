@@ -1,0 +1,67 @@
+/* engine.h: what fast_raster.c and extras/ share: the bins, a tile's work,
+ * the block kernels (kernels.h). */
+#ifndef ENGINE_H
+#define ENGINE_H
+
+#include "fast_raster.h"
+#include "hierarchical_z.h"
+#include "intmath.h"
+#include "kernels.h"
+#include "polygon.h"
+#include "scanline.h"
+
+typedef struct { int64_t x, y; double inv_d; } Corner; /* snapped, as lesson 04 */
+typedef struct { int64_t c; int32_t a, b; } EdgeFn;     /* a x + b y + c >= 0: inside */
+
+typedef struct {
+    BlockDepth depth;
+    int x0, y0, x1, y1;  /* the pixels it may cover, on the screen */
+    uint32_t first, n;   /* its edges (or, walked, its corners) in the bins */
+    bool walked, plain;  /* lesson 04's walk; a plane only plain C takes */
+    int turn; double inv_far;
+} Poly;
+
+typedef struct { uint32_t *at; size_t n, cap; } Bin; /* polygons, in the order drawn */
+
+struct Bins {
+    const Target *target; int tiles_x, tiles_y;
+    Bins *next; /* the bins of faces set up after these (held.c) */
+    Poly *poly; size_t npoly, cap_poly;
+    EdgeFn *edge; size_t nedge, cap_edge;
+    Corner *corner; size_t ncorner, cap_corner;
+    Bin *bin; /* one per tile, row by row */
+};
+
+typedef struct { /* what one thread needs to draw a tile */
+    Target *t; const FastRaster *fr; const BlockKernels *k;
+    FragmentStats stats;
+    int tx0, ty0, tx1, ty1; /* its pixels on the screen */
+    Target view;            /* t, but view.hiz is this thread's: */
+    HierarchicalZ hiz;      /* t's tile buffer, with this thread's counts */
+} TileWork;
+
+uint64_t popcount(uint64_t mask);
+int64_t snap(double pixels); /* lesson 04's floor(pixels S + 1/2), without a call */
+
+/* engine.c: the bins' memory, lesson 07's set-up of a face, lesson 04's
+ * corners and walk, a fragment in plain C (counted when counting). */
+Bins *bins_of(Target *t);
+bool bins_room(Bins *b, const Poly *p, int n); /* for p, of n corners */
+void bins_empty(Bins *b); /* and the bins chained after it, unchained */
+bool tile_busy(const Bins *b, int tile); /* a polygon in it, in b or after */
+void draw_fast_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
+void set_up_held_faces(Target *t); /* held.c: by the threads, into chained bins */
+/* The face's plane and format from t's setup; plain: not finite. */
+BlockDepth block_depth(const FastRaster *fr, int face, bool *plain);
+bool corner_in_range(const ScreenVertex *v);
+void corners_on_plane(Corner *c, const ScreenVertex *v, int n);
+void walk_in_tile(TileWork *w, const Poly *p, const Corner *c);
+bool test_pixel(TileWork *w, const BlockDepth *d, int x, int y);
+DepthSetup plane_setup(const BlockDepth *d); /* for hiz_bound: d's plane, format, mapping */
+void tile_work_begin(TileWork *w, Target *t, const FastRaster *fr); /* the view, the kernels */
+void tile_work_end(TileWork *w); /* its counts added to t's */
+void tile_read_again(TileWork *w); /* every block of the tile, after lesson 04's walk */
+uint64_t long_edge_coverage(const EdgeFn *e, int64_t at); /* at: e at the block's first */
+void clear_fast(Target *t); /* and lesson 09's hiz_clear */
+
+#endif

@@ -1,0 +1,144 @@
+/* extras.c: lesson 10's flags (see extras.h). The depth flags are lesson
+ * 07's, with the same words. */
+#include "extras.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "cli.h"
+#include "hierarchical_z.h"
+
+enum { FLAG_SIMD, FLAG_THREADS, FLAG_FORMAT, FLAG_MAPPING, FLAG_OFFSET, FLAG_CLAMP, FLAG_COUNT };
+
+#define MAX_THREADS 256
+
+static const LessonFlag FLAGS[FLAG_COUNT] = {
+    [FLAG_SIMD] = {"--simd", "S", "none (plain C), sse2 or avx2: how many pixels of a block "
+                                  "at once (default: the widest this machine has)"},
+    [FLAG_THREADS] = {"--threads", "N", "threads drawing tiles, 1 to 256 (default: the "
+                                        "machine's cores); the picture is the same for any N"},
+    [FLAG_FORMAT] = {"--depth-format", "F", "what the depth buffer stores: unorm16, unorm24 "
+                                            "(the default) or float32"},
+    [FLAG_MAPPING] = {"--depth-mapping", "M", "standard (the default: 0 at near, 1 at far) or "
+                                              "reversed (1 at near, 0 at far; takes --far inf)"},
+    [FLAG_OFFSET] = {"--polygon-offset", "FACTOR,UNITS",
+                     "depth bias of the faces in group or object `decal`: o = m * FACTOR + "
+                     "r * UNITS added to z_w (default 0,0)"},
+    [FLAG_CLAMP] = {"--offset-clamp", "C", "limit o to C as Direct3D and Vulkan do (0, the "
+                                           "default: no limit)"},
+};
+
+static const char *const SIMD_NAMES[] = {[SIMD_NONE] = "none", [SIMD_SSE2] = "sse2",
+                                         [SIMD_AVX2] = "avx2"};
+static const char *const FORMAT_NAMES[] = {[UNORM16] = "unorm16", [UNORM24] = "unorm24",
+                                           [FLOAT32] = "float32"};
+static const char *const MAPPING_NAMES[] = {[STANDARD] = "standard", [REVERSED] = "reversed"};
+
+#define FAR_AT_INFINITY 1e30 /* lesson 07's stand-in for --far inf in clip space */
+
+static const DepthRule REVERSED_RULE = {"depth buffer", "z_w", "face", LARGER_IS_NEARER};
+
+const char *simd_name(Simd simd)
+{
+    return SIMD_NAMES[simd];
+}
+
+void print_engine(const Target *t)
+{
+    const FastRaster *fr = (const FastRaster *)t->depth_setup;
+    printf("  drawn in tiles of %d x %d pixels, blocks of %d x %d, SIMD %s, %d thread%s%s\n",
+           TILE_SIZE, TILE_SIZE, BLOCK_SIZE, BLOCK_SIZE, simd_name(fr->simd), fr->threads,
+           fr->threads == 1 ? "" : "s", fr->count ? " (counting: plain C, one thread)" : "");
+    if (t->hiz && !fr->count)
+        printf("  hierarchical Z, %dx%d tiles (one per block): tiles tested %llu, skipped %llu\n",
+               t->hiz->tile, t->hiz->tile, t->hiz->tiles_tested, t->hiz->tiles_skipped);
+}
+
+static int find_name(const char *name, const char *const *names, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (strcmp(name, names[i]) == 0)
+            return i;
+    return -1;
+}
+
+static bool parse_offset(const char *s, double *factor, double *units, Error *err)
+{
+    const char *comma = s ? strchr(s, ',') : NULL;
+    char first[64];
+    if (!comma || (size_t)(comma - s) >= sizeof first)
+        return error_set(err, "--polygon-offset: '%.40s' is not two numbers FACTOR,UNITS",
+                         s ? s : "");
+    memcpy(first, s, (size_t)(comma - s));
+    first[comma - s] = '\0';
+    return parse_double("--polygon-offset (FACTOR)", first, factor, err) &&
+           parse_double("--polygon-offset (UNITS)", comma + 1, units, err);
+}
+
+static int cores(void)
+{
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n < 1 ? 1 : n > MAX_THREADS ? MAX_THREADS : (int)n;
+}
+
+FastRaster fast_chosen(const Run *run)
+{
+    const char *const *x = run->opt.extra;
+    int format = x[FLAG_FORMAT] ? find_name(x[FLAG_FORMAT], FORMAT_NAMES, 3) : UNORM24;
+    int mapping = x[FLAG_MAPPING] ? find_name(x[FLAG_MAPPING], MAPPING_NAMES, 2) : STANDARD;
+    double far = run->opt.far >= FAR_AT_INFINITY ? INFINITY : run->opt.far;
+    DepthSetup s = depth_setup((DepthFormat)format, (DepthMapping)mapping, run->opt.near, far);
+    Error ignored; /* choose() has checked every flag */
+    long threads = cores();
+    if (x[FLAG_OFFSET])
+        parse_offset(x[FLAG_OFFSET], &s.bias.factor, &s.bias.units, &ignored);
+    if (x[FLAG_CLAMP])
+        parse_double("--offset-clamp", x[FLAG_CLAMP], &s.bias.clamp, &ignored);
+    if (x[FLAG_THREADS])
+        parse_int("--threads", x[FLAG_THREADS], 1, MAX_THREADS, &threads, &ignored);
+    s.bias.mesh = &run->render.mesh;
+    Simd simd = x[FLAG_SIMD] ? (Simd)find_name(x[FLAG_SIMD], SIMD_NAMES, 3) : simd_best();
+    return fast_raster(s, simd, (int)threads, run->opt.overdraw_out || run->opt.trace_set);
+}
+
+static bool choose(Run *run, Error *err)
+{
+    const char *const *x = run->opt.extra;
+    double factor, units, clamp;
+    long threads;
+    if (run->opt.steps_dir)
+        return error_set(err, "--steps does not apply to 10_fast_raster (faces are drawn "
+                              "later, tile by tile: there is no picture after each face)");
+    int simd = x[FLAG_SIMD] ? find_name(x[FLAG_SIMD], SIMD_NAMES, 3) : SIMD_NONE;
+    if (simd < 0)
+        return error_set(err, "--simd: '%s' is not one of none, sse2, avx2", x[FLAG_SIMD]);
+    if (simd > (int)simd_best())
+        return error_set(err, "--simd %s: this machine (or build) has only %s", x[FLAG_SIMD],
+                         SIMD_NAMES[simd_best()]);
+    if (x[FLAG_THREADS] && !parse_int("--threads", x[FLAG_THREADS], 1, MAX_THREADS, &threads, err))
+        return false;
+    if (x[FLAG_FORMAT] && find_name(x[FLAG_FORMAT], FORMAT_NAMES, 3) < 0)
+        return error_set(err, "--depth-format: '%s' is not one of unorm16, unorm24, float32",
+                         x[FLAG_FORMAT]);
+    if (x[FLAG_MAPPING] && find_name(x[FLAG_MAPPING], MAPPING_NAMES, 2) < 0)
+        return error_set(err, "--depth-mapping: '%s' is not one of standard, reversed",
+                         x[FLAG_MAPPING]);
+    if (x[FLAG_OFFSET] && !parse_offset(x[FLAG_OFFSET], &factor, &units, err))
+        return false;
+    if (x[FLAG_CLAMP] && !parse_double("--offset-clamp", x[FLAG_CLAMP], &clamp, err))
+        return false;
+    bool reversed = x[FLAG_MAPPING] && strcmp(x[FLAG_MAPPING], "reversed") == 0;
+    if (isinf(run->opt.far)) {
+        if (!reversed)
+            return error_set(err, "--far inf needs --depth-mapping reversed (the standard "
+                                  "mapping divides by far - near)");
+        run->opt.far = FAR_AT_INFINITY;
+    }
+    if (reversed)
+        run->rule = &REVERSED_RULE;
+    return true;
+}
+
+const Extras EXTRAS = {.flags = FLAGS, .n_flags = FLAG_COUNT, .choose = choose};

@@ -1,0 +1,127 @@
+/* held.c: lesson 10's set-up on threads (engine.h). With more than one
+ * thread, lesson 07's set-up of each face (clip, plane, snap, edges, bins)
+ * would leave the other threads waiting: so draw_fast_face only copies the
+ * face, and fast_finish hands the faces held back to the threads in as many
+ * runs, in order. Each thread sets its run up with a copy of the engine
+ * (lesson 07's code keeps the plane of the triangle being drawn in it) into
+ * bins of its own; the tiles then take the bins one run after the other,
+ * so every polygon is drawn in the order the faces came. */
+#include "held.h"
+
+#include <pthread.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define HOLD_MAX (1 << 16) /* faces held before they are drawn: memory stays small */
+#define RUNS_MAX 64
+
+typedef struct { int face, n; bool convex, clipped; size_t first, first_tri; } HeldFace;
+
+struct Held {
+    HeldFace *face; size_t nface, cap_face;
+    ScreenVertex *v; Vec4 *clip; size_t nv, cap_v, cap_clip; /* the corners */
+    Tri *tri; size_t ntri, cap_tri;
+    DrawContext ctx;
+    Bins *run[RUNS_MAX]; /* each run's bins, kept from one finish to the next */
+};
+
+typedef struct { Target *t; Held *h; size_t lo, hi; int k; } Run;
+
+static bool room(void **items, size_t *cap, size_t need, size_t size)
+{
+    size_t more = *cap ? *cap : 4096;
+    while (more < need)
+        more *= 2;
+    void *bigger = need <= *cap ? *items : realloc(*items, more * size);
+    if (bigger && need > *cap)
+        *items = bigger, *cap = more;
+    return bigger != NULL;
+}
+
+bool hold_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+{
+    FastRaster *fr = (FastRaster *)t->depth_setup;
+    if (!fr->held && !(fr->held = calloc(1, sizeof *fr->held)))
+        return false;
+    Held *h = fr->held;
+    if (h->nface >= HOLD_MAX)
+        fast_finish(t);
+    void *face = h->face, *v = h->v, *clip = h->clip, *tri = h->tri;
+    size_t n = (size_t)f->n;
+    bool ok = room(&face, &h->cap_face, h->nface + 1, sizeof *h->face) &&
+              room(&v, &h->cap_v, h->nv + n, sizeof *h->v) &&
+              room(&clip, &h->cap_clip, h->nv + n, sizeof *h->clip) &&
+              room(&tri, &h->cap_tri, h->ntri + n - 2, sizeof *h->tri);
+    h->face = face, h->v = v, h->clip = clip, h->tri = tri;
+    if (!ok) {
+        fast_finish(t); /* what was held, first: then this face is set up now */
+        return false;
+    }
+    memcpy(h->v + h->nv, f->v, n * sizeof *f->v);
+    if (f->clip)
+        memcpy(h->clip + h->nv, f->clip, n * sizeof *f->clip);
+    memcpy(h->tri + h->ntri, f->tris, (n - 2) * sizeof *f->tris);
+    h->face[h->nface++] = (HeldFace){f->face, f->n, f->convex, f->clip != NULL, h->nv, h->ntri};
+    h->nv += n, h->ntri += n - 2;
+    h->ctx = *ctx;
+    return true;
+}
+
+/* Faces lo .. hi - 1, set up by a copy of the engine into run k's bins. */
+static void *set_up_run(void *arg)
+{
+    Run *r = arg;
+    Held *h = r->h;
+    FastRaster sub = *(FastRaster *)r->t->depth_setup;
+    Target t = *r->t;
+    sub.bins = h->run[r->k], sub.held = NULL, sub.set_up_only = true;
+    t.depth_setup = &sub.depth;
+    for (size_t i = r->lo; i < r->hi; i++) {
+        const HeldFace *g = &h->face[i];
+        ScreenFace f = {.face = g->face, .n = g->n, .v = h->v + g->first,
+                        .tris = h->tri + g->first_tri, .convex = g->convex,
+                        .clip = g->clipped ? h->clip + g->first : NULL};
+        set_up_face(&t, &f, &h->ctx);
+    }
+    h->run[r->k] = sub.bins;
+    return NULL;
+}
+
+void set_up_held_faces(Target *t)
+{
+    FastRaster *fr = (FastRaster *)t->depth_setup;
+    Held *h = fr->held;
+    if (!h || h->nface == 0 || !bins_of(t))
+        return;
+    int runs = fr->threads < RUNS_MAX ? fr->threads : RUNS_MAX;
+    Run r[RUNS_MAX];
+    pthread_t id[RUNS_MAX];
+    bool started[RUNS_MAX] = {false};
+    for (int k = 0; k < runs; k++) {
+        r[k] = (Run){t, h, h->nface * (size_t)k / (size_t)runs,
+                     h->nface * (size_t)(k + 1) / (size_t)runs, k};
+        started[k] = k > 0 && pthread_create(&id[k], NULL, set_up_run, &r[k]) == 0;
+    }
+    set_up_run(&r[0]);
+    Bins *last = fr->bins;
+    for (int k = 0; k < runs; k++) { /* in order: run k's bins after run k - 1's */
+        if (k > 0 && !started[k])
+            set_up_run(&r[k]);
+        else if (k > 0)
+            pthread_join(id[k], NULL);
+        if (h->run[k])
+            last->next = h->run[k], last = h->run[k];
+    }
+    h->nface = h->nv = h->ntri = 0;
+}
+
+void held_free(FastRaster *fr)
+{
+    Held *h = fr->held;
+    for (int k = 0; h && k < RUNS_MAX; k++)
+        bins_free(h->run[k]);
+    if (h)
+        free(h->face), free(h->v), free(h->clip), free(h->tri);
+    free(h);
+    fr->held = NULL;
+}

@@ -1,0 +1,13 @@
+/* held.h: lesson 10's faces held back for the threads to set up (held.c),
+ * and what engine.c shares with it. */
+#ifndef HELD_H
+#define HELD_H
+
+#include "engine.h"
+
+void set_up_face(Target *t, const ScreenFace *f, const DrawContext *ctx); /* now */
+bool hold_face(Target *t, const ScreenFace *f, const DrawContext *ctx);  /* false: cannot */
+void held_free(FastRaster *fr);
+void bins_free(Bins *b);
+
+#endif

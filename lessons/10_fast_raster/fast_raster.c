@@ -1,0 +1,284 @@
+/* fast_raster.c: lesson 10's rasterizer, step by step (fast_raster.h). It
+ * replaces lesson 04's scanline.c: draw_polygon still takes one convex
+ * polygon at a time, but draws nothing until fast_finish. */
+#include "fast_raster.h"
+
+#include <math.h>
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+
+#include "extras/engine.h"
+
+#define S ((int64_t)SUBPIXEL_ONE) /* sub-pixel units per pixel */
+#define HALF_PIXEL ((int64_t)SUBPIXEL_HALF)
+#define POLYGON_MAX_CORNERS 256 /* more: drawn as triangles, as lesson 04 does */
+#define BLOCKS (TILE_SIZE / BLOCK_SIZE) /* blocks per tile side */
+#define LAST (BLOCK_SIZE - 1)           /* a block's last pixel, from its first */
+#define SHORT_EDGE (1 << 27)     /* |a| + |b| below it: a block's values fit in 32 bits */
+#define FAR_SLACK 1e-7           /* of 1/d: more than the scanline's rounding */
+#define FLUSH_POLYGONS (1 << 16) /* drawn once this many wait: the bins stay small */
+
+static int imin(int a, int b) { return a < b ? a : b; }
+static int imax(int a, int b) { return a > b ? a : b; }
+static int64_t first_centre_at_or_after(int64_t v) { return ceil_div(v - HALF_PIXEL, S); }
+
+/* ---- Set-up: each polygon into the bins of the tiles it may touch ------ */
+
+/* The edge from a to b of a polygon going clockwise on the screen. A pixel
+ * centre is inside when it is right of every edge, or on one that goes up
+ * (a left edge) or right (a top edge): lesson 04's rule. In sub-pixel units
+ * that is S (a x + b y) + C >= 0, a = -dy, b = dx; and with C = S c + r,
+ * 0 <= r < S, it is a x + b y + c >= 0: 32-bit steps per pixel. */
+static EdgeFn edge_function(Corner from, Corner to)
+{
+    int64_t dx = to.x - from.x, dy = to.y - from.y;
+    /* SOLUTION BEGIN: C, the edge's value at pixel (0, 0), one less when a
+     * centre on the edge is outside it. */
+    bool on_edge_inside = dy < 0 || (dy == 0 && dx > 0);
+    int64_t c = (HALF_PIXEL - from.y) * dx - (HALF_PIXEL - from.x) * dy - !on_edge_inside;
+    return (EdgeFn){floor_div(c, S), (int32_t)-dy, (int32_t)dx};
+    /* SOLUTION STUB
+    return (EdgeFn){0, (int32_t)-dy, (int32_t)dx};
+    */
+    /* SOLUTION END */
+}
+
+static int64_t edge_at(const EdgeFn *e, int x, int y)
+{
+    return (int64_t)e->a * x + (int64_t)e->b * y + e->c;
+}
+
+/* The largest value of e over pixels x0 .. x0 + w, y0 .. y0 + h (a corner's). */
+static int64_t edge_max(const EdgeFn *e, int x0, int y0, int w, int h)
+{
+    return edge_at(e, x0, y0) + (e->a > 0 ? (int64_t)e->a * w : 0) +
+           (e->b > 0 ? (int64_t)e->b * h : 0);
+}
+
+/* p and its edges into the bin of every tile of its box no edge leaves out. */
+static void bin_polygon(Bins *b, Poly *p, const Corner *c, int n)
+{
+    p->first = (uint32_t)(p->walked ? b->ncorner : b->nedge);
+    for (int k = 0; k < n; k++) {
+        Corner from = c[p->turn < 0 ? n - 1 - k : k];
+        Corner to = c[p->turn < 0 ? (2 * n - 2 - k) % n : (k + 1) % n];
+        if (p->walked)
+            b->corner[b->ncorner + p->n++] = c[k];
+        else if (from.x != to.x || from.y != to.y) /* a corner twice is no edge */
+            b->edge[b->nedge + p->n++] = edge_function(from, to);
+    }
+    const EdgeFn *e = b->edge + b->nedge;
+    for (int ty = p->y0 / TILE_SIZE; ty <= (p->y1 - 1) / TILE_SIZE; ty++)
+        for (int tx = p->x0 / TILE_SIZE; tx <= (p->x1 - 1) / TILE_SIZE; tx++) {
+            int x0 = imax(p->x0, tx * TILE_SIZE), y0 = imax(p->y0, ty * TILE_SIZE);
+            int w = imin(p->x1, (tx + 1) * TILE_SIZE) - 1 - x0;
+            int h = imin(p->y1, (ty + 1) * TILE_SIZE) - 1 - y0;
+            bool outside = false;
+            for (uint32_t k = 0; !p->walked && k < p->n && !outside; k++)
+                outside = edge_max(&e[k], x0, y0, w, h) < 0;
+            Bin *bin = &b->bin[ty * b->tiles_x + tx];
+            if (!outside) /* bins_room made room */
+                bin->at[bin->n++] = (uint32_t)b->npoly;
+        }
+    *(p->walked ? &b->ncorner : &b->nedge) += p->n;
+    b->poly[b->npoly++] = *p;
+}
+
+/* Its box on the screen, whether the far plane may discard fragments; binned. */
+static void set_up_polygon(Target *t, const Corner *c, int n, int turn, int face, double inv_far)
+{
+    Poly p = {.turn = turn, .inv_far = inv_far, .x0 = t->width, .y0 = t->height};
+    double near_inv = 0, far_inv = INFINITY;
+    for (int k = 0; k < n; k++) {
+        p.x0 = imin(p.x0, (int)imax(0, (int)first_centre_at_or_after(c[k].x)));
+        p.y0 = imin(p.y0, (int)imax(0, (int)first_centre_at_or_after(c[k].y)));
+        p.x1 = imax(p.x1, imin(t->width, (int)floor_div(c[k].x - HALF_PIXEL, S) + 1));
+        p.y1 = imax(p.y1, imin(t->height, (int)floor_div(c[k].y - HALF_PIXEL, S) + 1));
+        near_inv = c[k].inv_d > near_inv ? c[k].inv_d : near_inv;
+        far_inv = c[k].inv_d < far_inv ? c[k].inv_d : far_inv;
+    }
+    if (p.x0 >= p.x1 || p.y0 >= p.y1)
+        return; /* no pixel centre on the screen */
+    /* Every 1/d inside lies between the corners' (up to rounding, far below
+     * FAR_SLACK): unless one is near the far plane, nothing is discarded. */
+    p.walked = turn == 0 || !(far_inv - inv_far > FAR_SLACK * near_inv);
+    p.depth = block_depth((FastRaster *)t->depth_setup, face, &p.plain);
+    Bins *b = bins_of(t);
+    if (b && (b->npoly >= FLUSH_POLYGONS || !bins_room(b, &p, n)))
+        fast_finish(t); /* draw what waits, then there is room */
+    if (b && bins_room(b, &p, n))
+        bin_polygon(b, &p, c, n);
+}
+
+/* A convex polygon as lesson 04 takes it; false: it would draw its triangles. */
+bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
+{
+    if (n < 3)
+        return true;
+    if (n > POLYGON_MAX_CORNERS)
+        return false;
+    Corner c[POLYGON_MAX_CORNERS];
+    for (int i = 0; i < n; i++) {
+        if (!corner_in_range(&v[i]))
+            return false;
+        c[i] = (Corner){snap(v[i].x), snap(v[i].y), 1.0 / v[i].d};
+    }
+    int turn; /* a triangle is convex: its turn is that of its snapped corners */
+    if (n == 3) {
+        int64_t cross = (c[1].x - c[0].x) * (c[2].y - c[1].y) - (c[1].y - c[0].y) * (c[2].x - c[1].x);
+        turn = (cross > 0) - (cross < 0);
+    } else if (!convex_on_screen(v, n, SUBPIXEL_ONE, &turn))
+        return false;
+    corners_on_plane(c, v, n); /* lesson 04's 1/d of the snapped corners */
+    set_up_polygon(t, c, n, turn, face, 1.0 / far);
+    return true;
+}
+
+/* ---- Blocks: coverage, hierarchical Z, the depth test ------------------ */
+
+/* The pixels of box in the block at (x0, y0) inside every edge: a block
+ * wholly outside one has none; the edges that cross it, per pixel. */
+static uint64_t block_coverage(const TileWork *w, const EdgeFn *e, uint32_t n, int x0, int y0,
+                               uint64_t box)
+{
+    int32_t g[POLYGON_MAX_CORNERS], a[POLYGON_MAX_CORNERS], b[POLYGON_MAX_CORNERS];
+    int crossing = 0;
+    for (uint32_t k = 0; k < n; k++) {
+        int64_t at = edge_at(&e[k], x0, y0), hi = edge_max(&e[k], x0, y0, LAST, LAST);
+        /* SOLUTION BEGIN: the block against edge k, from its corners. */
+        int64_t lo = at + LAST * (int64_t)(e[k].a < 0 ? e[k].a : 0) +
+                     LAST * (int64_t)(e[k].b < 0 ? e[k].b : 0);
+        if (hi < 0)
+            return 0; /* wholly outside this edge */
+        if (lo >= 0)
+            continue; /* wholly inside it */
+        /* SOLUTION STUB
+        (void)hi;
+        */
+        /* SOLUTION END */
+        if (abs(e[k].a) + abs(e[k].b) < SHORT_EDGE)
+            g[crossing] = (int32_t)at, a[crossing] = e[k].a, b[crossing++] = e[k].b;
+        else
+            box &= long_edge_coverage(&e[k], at); /* in 64 bits */
+    }
+    return crossing > 0 && box ? w->k->coverage(g, a, b, crossing, box) : box;
+}
+
+/* The block's pixels in mask: skipped when lesson 09's tile buffer (a tile
+ * is a block) says none can pass, else tested by the kernel (plain C where
+ * the screen cuts a row short), which hands back the block's farthest value
+ * when it read every row. */
+static void draw_block(TileWork *w, const Poly *p, int x0, int y0, uint64_t mask)
+{
+    Target *t = w->t;
+    HierarchicalZ *h = w->view.hiz;
+    int k = h ? y0 / BLOCK_SIZE * h->tiles_x + x0 / BLOCK_SIZE : 0;
+    if (w->fr->count) { /* every fragment counted, one by one */
+        for (int bit = 0; bit < BLOCK_SIZE * BLOCK_SIZE; bit++)
+            if (mask >> bit & 1)
+                test_pixel(w, &p->depth, x0 + (bit & LAST), y0 + bit / BLOCK_SIZE);
+        return;
+    }
+    /* SOLUTION BEGIN: lesson 09's question, per block: the plane's nearest
+     * value over the block's part of the box against the block's farthest. */
+    DepthSetup plane = plane_setup(&p->depth);
+    int x1 = imin(x0 + LAST, p->x1 - 1), y1 = imin(y0 + LAST, p->y1 - 1);
+    float nearest = h ? hiz_bound(&plane, imax(x0, p->x0), imax(y0, p->y0), x1, y1, true) : 0;
+    if (h && hiz_skips(&w->view, k, nearest))
+        return;
+    /* SOLUTION END */
+    const BlockKernels *kernels = p->plain || x0 + BLOCK_SIZE > t->width ? &PLAIN_KERNELS : w->k;
+    size_t i = (size_t)y0 * (size_t)t->width + (size_t)x0;
+    float far;
+    uint64_t passed = kernels->depth_test(t->depth + i, t->face + i, (size_t)t->width, x0, y0,
+                                          mask, &p->depth, &far);
+    w->stats.tested += popcount(mask), w->stats.passed += popcount(passed);
+    if (h && !isnan(far)) /* else, as writes only come nearer, it still bounds them */
+        h->far[k] = far;
+}
+
+/* p's blocks in the tile, row by row, each only where p's box is. */
+static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
+{
+    for (int y0 = imax(p->y0, w->ty0) & ~LAST; y0 < imin(p->y1, w->ty1); y0 += BLOCK_SIZE)
+        for (int x0 = imax(p->x0, w->tx0) & ~LAST; x0 < imin(p->x1, w->tx1); x0 += BLOCK_SIZE) {
+            int left = imax(p->x0 - x0, 0), right = imin(p->x1 - x0, BLOCK_SIZE);
+            int top = imax(p->y0 - y0, 0), bottom = imin(p->y1 - y0, BLOCK_SIZE);
+            uint64_t row = ((uint64_t)1 << right) - ((uint64_t)1 << left);
+            uint64_t box = row * 0x0101010101010101ull & ~(uint64_t)0 << (BLOCK_SIZE * top) &
+                           ~(uint64_t)0 >> (BLOCK_SIZE * (BLOCK_SIZE - bottom));
+            uint64_t mask = block_coverage(w, e, p->n, x0, y0, box);
+            if (mask)
+                draw_block(w, p, x0, y0, mask);
+        }
+}
+
+/* ---- Tiles and threads ------------------------------------------------- */
+
+/* One tile: each block's farthest value, then its polygons in order, b's first. */
+static void draw_tile(TileWork *w, const Bins *b, int tile)
+{
+    w->tx0 = tile % b->tiles_x * TILE_SIZE, w->ty0 = tile / b->tiles_x * TILE_SIZE;
+    w->tx1 = imin(w->tx0 + TILE_SIZE, w->t->width), w->ty1 = imin(w->ty0 + TILE_SIZE, w->t->height);
+    for (; b; b = b->next)
+        for (size_t k = 0; k < b->bin[tile].n; k++) {
+            const Poly *p = &b->poly[b->bin[tile].at[k]];
+            if (!p->walked)
+                draw_in_tile(w, p, &b->edge[p->first]);
+            else /* lesson 04's walk, then every block's farthest anew */
+                walk_in_tile(w, p, &b->corner[p->first]), tile_read_again(w);
+        }
+}
+
+typedef struct { const Bins *b; const int *tiles; int ntiles; atomic_int next; } Work;
+
+typedef struct { Work *work; TileWork tw; } Thread;
+
+/* Takes tiles until none is left: no two threads share a pixel, each tile is
+ * drawn in order, so the picture does not depend on who took which tile. */
+static void *draw_tiles(void *arg)
+{
+    Thread *th = arg;
+    for (int k; (k = atomic_fetch_add(&th->work->next, 1)) < th->work->ntiles;)
+        draw_tile(&th->tw, th->work->b, th->work->tiles[k]);
+    return NULL;
+}
+
+void fast_finish(Target *t)
+{
+    FastRaster *fr = (FastRaster *)t->depth_setup;
+    if (fr->set_up_only)
+        return;
+    set_up_held_faces(t);
+    Bins *b = fr->bins;
+    int ntiles = b ? b->tiles_x * b->tiles_y : 0, busy = 0;
+    int nthreads = fr->count ? 1 : imax(1, fr->threads), started = 1;
+    int *tiles = b ? malloc((size_t)ntiles * sizeof *tiles) : NULL;
+    Thread *th = tiles ? malloc((size_t)nthreads * sizeof *th) : NULL;
+    pthread_t *id = th ? malloc((size_t)nthreads * sizeof *id) : NULL;
+    for (int k = 0; id && k < ntiles; k++)
+        if (tile_busy(b, k))
+            tiles[busy++] = k;
+    Work work = {.b = b, .tiles = tiles, .ntiles = busy};
+    atomic_init(&work.next, 0);
+    for (int i = 0; id && i < nthreads; i++)
+        th[i].work = &work, tile_work_begin(&th[i].tw, t, fr);
+    while (id && started < imin(nthreads, busy) &&
+           pthread_create(&id[started], NULL, draw_tiles, &th[started]) == 0)
+        started++;
+    if (id)
+        draw_tiles(&th[0]); /* this thread draws too */
+    for (int i = 0; id && i < started; i++) {
+        if (i > 0)
+            pthread_join(id[i], NULL);
+        tile_work_end(&th[i].tw);
+    }
+    bins_empty(b);
+    free(id), free(th), free(tiles);
+}
+
+const Rasterizer FAST_ZBUFFER = {
+    .clear = clear_fast, .draw_face = draw_fast_face, .stored_to_depth = stored_to_depth,
+    .clips = true, .finish = fast_finish,
+};

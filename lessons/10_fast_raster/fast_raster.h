@@ -1,0 +1,43 @@
+/* fast_raster.h: lesson 10, a fast rasterizer (docs/10_fast_raster.md).
+ * Lesson 09's pictures, drawn as Mesa's llvmpipe draws:
+ *   bins     each polygon in the bin of every screen tile it may touch;
+ *            fast_finish draws the tiles, each its polygons in order
+ *   blocks   edge functions at a block's corners take or reject it whole;
+ *            a block an edge crosses is tested per pixel (lesson 04's rule)
+ *   depth    lessons 06 to 09's: a block lesson 09's tile buffer hides is skipped
+ *   SIMD     a block row at once: SSE2 4 pixels, AVX2 8
+ *   threads  tiles handed out one at a time: no two share a pixel */
+#ifndef FAST_RASTER_H
+#define FAST_RASTER_H
+
+#include <stdint.h>
+
+#include "depth_format.h"
+
+#define TILE_SIZE 64 /* pixels: a tile is 8 x 8 blocks */
+#define BLOCK_SIZE 8 /* pixels: a block row is one AVX2 register of floats */
+
+typedef enum { SIMD_NONE, SIMD_SSE2, SIMD_AVX2 } Simd;
+typedef struct Bins Bins; /* what waits for fast_finish (extras/engine.h) */
+typedef struct Held Held; /* faces held back for the threads to set up */
+
+typedef struct {
+    DepthSetup depth; /* first: Target.depth_setup points here, so at the FastRaster */
+    Simd simd;        /* the widest this machine has, or --simd */
+    int threads;      /* --threads */
+    bool count;       /* overdraw[] and --trace: plain C, one thread */
+    uint64_t keep;    /* the face's pixels a cutout keeps, in any block */
+    Bins *bins; Held *held;
+    bool set_up_only; /* a thread's copy, setting faces up: it never draws */
+} FastRaster;
+
+FastRaster fast_raster(DepthSetup depth, Simd simd, int threads, bool count);
+Simd simd_best(void);
+void fast_finish(Target *t); /* draws every tile's bin */
+void fast_raster_free(FastRaster *fr);
+
+/* hiz_clear; each face set up as lesson 07 sets it up, its polygons
+ * binned; fast_finish. */
+extern const Rasterizer FAST_ZBUFFER;
+
+#endif

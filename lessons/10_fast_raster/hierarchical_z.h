@@ -1,0 +1,34 @@
+/* hierarchical_z.h: lesson 09, hierarchical Z (docs/09_hierarchical_z.md).
+ *
+ *   tile buffer  per tile of T x T pixels (--tile T, 8 by default): a bound
+ *                on the farthest value stored in it; a triangle covering a
+ *                tile whole brings it to the plane's farthest value there
+ *                (--hiz-update exact: any tile drawn into is read again)
+ *   skipped      a tile where the triangle's nearest value is farther than
+ *                the tile's farthest: no fragment there could pass (tiles.c) */
+#ifndef HIERARCHICAL_Z_H
+#define HIERARCHICAL_Z_H
+
+#include "depth_format.h"
+
+typedef struct HierarchicalZ {
+    int tile, tiles_x, tiles_y; /* tile side in pixels; tiles across and down */
+    float *far;                 /* per tile: the farthest value stored in it, or a bound */
+    bool exact;                 /* --hiz-update exact: every tile drawn into read again */
+    bool count_skipped;         /* count the fragments of skipped tiles (the summary) */
+    unsigned long long tiles_tested, tiles_skipped, fragments_skipped, faces_skipped;
+} HierarchicalZ;
+
+/* The steps, in the order hierarchical_z.c takes them (each is explained there). */
+bool hiz_begin(HierarchicalZ *h, Target *t, int tile, Error *err); /* t->hiz = h */
+void hiz_read_tile(HierarchicalZ *h, const Target *t, int tile);
+void hiz_clear(Target *t);                                   /* clear_depth, every tile too */
+float hiz_bound(const DepthSetup *s, int x0, int y0, int x1, int y1, bool nearest); /* plane's */
+bool hiz_skips(const Target *t, int tile, float nearest);
+void hiz_covered(const Target *t, int tile, float farthest); /* a triangle covered it */
+void hiz_free(HierarchicalZ *h);
+
+/* Lesson 07's faces (decals biased) drawn by tiles.c, with the tile buffer. */
+extern const Rasterizer HIERARCHICAL_ZBUFFER;
+
+#endif

@@ -1,0 +1,44 @@
+/* main.c: lesson 10, a fast rasterizer (docs/10_fast_raster.md).
+ *
+ * The outline of the program. What this lesson teaches is in fast_raster.c
+ * (it replaces lesson 09's tiles.c): lesson 09's pictures drawn in tiles and
+ * blocks, with SIMD and threads, each block asking lesson 09's tile buffer
+ * first. What it shows but does not teach (its flags, the SIMD kernels) is
+ * in extras/. */
+#include "extras/extras.h" /* and lesson 09's hierarchical_z.h */
+#include "fast_raster.h"
+#include "lesson.h"
+
+static const Lesson LESSON = {
+    .program = "10_fast_raster",
+    .purpose = "Lesson 10: a fast rasterizer: lesson 09's pictures drawn in tiles and blocks, "
+               "with SIMD and threads.",
+    .scene = "crowd",
+    .rasterizer = &FAST_ZBUFFER,
+    .depth_rule = {"depth buffer", "z_w", "face", SMALLER_IS_NEARER}, /* reversed: extras */
+    .extras = &EXTRAS,
+    .report = print_engine, /* tiles, blocks, SIMD, threads, the tile buffer */
+};
+
+int main(int argc, char **argv)
+{
+    Run run;
+    int status = run_load(&run, &LESSON, argc, argv); /* load: the command line, the scene */
+    if (status != RUN_GO)
+        return status;
+    FastRaster fr = fast_chosen(&run);                 /* --simd, --threads, the depth flags */
+    run.target.depth_setup = &fr.depth;                /* the buffer's format, the engine */
+    HierarchicalZ h = {0};
+    if (!hiz_begin(&h, &run.target, BLOCK_SIZE, &run.err)) { /* the tiles: one per block */
+        run.status = EXIT_RUN_FAILED;
+        return run_end(&run);
+    }
+    run.rz->clear(&run.target);                        /* clear: the far plane, every tile */
+    if (run_draw(&run) &&                              /* draw: binned, then tile by tile */
+        run_write(&run))                               /* write: the pictures asked for */
+        run_report(&run);                              /* report: the summary, the engine */
+    status = run_end(&run);
+    hiz_free(&h);
+    fast_raster_free(&fr);
+    return status;
+}

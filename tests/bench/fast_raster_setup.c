@@ -1,0 +1,43 @@
+/* fast_raster_setup.c: lesson 10 in the benchmark (bench_setup.h): its
+ * engine with unorm24, standard (as llvmpipe's rows use), the widest SIMD the
+ * machine has, once with one thread and once with one per core. To time
+ * another kernel: FAST_RASTER_SIMD=none (or sse2) in the environment. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "bench_setup.h"
+#include "fast_raster.h"
+#include "workloads.h"
+
+static FastRaster engine;
+
+static int cores(void)
+{
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n < 1 ? 1 : (int)n;
+}
+
+int bench_configs(void)
+{
+    return 2;
+}
+
+bool bench_configure(Target *t, int k, char *name, int size, bool *wall_clock)
+{
+    int threads = k == 0 ? 1 : cores();
+    fast_raster_free(&engine);
+    const char *chosen = getenv("FAST_RASTER_SIMD");
+    Simd simd = simd_best();
+    if (chosen && strcmp(chosen, "none") == 0)
+        simd = SIMD_NONE;
+    else if (chosen && strcmp(chosen, "sse2") == 0 && simd >= SIMD_SSE2)
+        simd = SIMD_SSE2;
+    engine = fast_raster(depth_setup(UNORM24, STANDARD, WORKLOAD_NEAR, WORKLOAD_FAR), simd,
+                         threads, false);
+    t->depth_setup = &engine.depth;
+    snprintf(name, (size_t)size, "10_fast_raster_%dt", threads);
+    *wall_clock = threads > 1;
+    return true;
+}
