@@ -349,6 +349,8 @@ void render_print_summary(FILE *out, const char *program, const Render *r, const
     if (covered)
         fprintf(out, "average overdraw %.2f over %ld covered pixel%s\n",
                 (double)s->tested / (double)covered, covered, covered == 1 ? "" : "s");
+    else if (s->tested) /* a rasterizer that keeps no count per pixel unless asked */
+        fprintf(out, "overdraw per pixel not counted (--overdraw-out counts it)\n");
     else
         fprintf(out, "no pixel covered\n");
 

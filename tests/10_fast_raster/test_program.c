@@ -217,6 +217,20 @@ static void fragments_are_counted_as_lesson_08_counts_them(void **state)
         fail_msg("crowd: the overdraw counts (--overdraw-out) differ from lesson 08's");
 }
 
+/* Not asked to count, lesson 10 keeps no count per pixel: the summary says
+ * so, rather than that no pixel was covered. */
+static void summary_says_overdraw_was_not_counted(void **state)
+{
+    (void)state;
+    const char *args[] = {"--scene", "crowd", "--out",
+                          path_join(test_dir("l10_summary"), "x.png"), NULL};
+    char *out = run_ok(PROGRAM, args);
+    if (!strstr(out, "; overdraw per pixel not counted (--overdraw-out counts it)\n") ||
+        strstr(out, "no pixel covered"))
+        fail_msg("the summary should say the overdraw was not counted:\n%s", out);
+    free(out);
+}
+
 /* The number after label in the program's summary (-1: none). */
 static long long number_after(const char *out, const char *label)
 {
@@ -272,6 +286,7 @@ int main(void)
         cmocka_unit_test(other_depth_buffers_draw_lesson_07s_pictures),
         cmocka_unit_test(fragments_are_counted_as_lesson_08_counts_them),
         cmocka_unit_test(most_blocks_behind_citys_wall_are_skipped),
+        cmocka_unit_test(summary_says_overdraw_was_not_counted),
         cmocka_unit_test(bad_command_lines_are_refused_with_status_2),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
