@@ -61,8 +61,8 @@ static void bin_polygon(Bins *b, Poly *p, const Corner *c, int n)
 {
     p->first = (uint32_t)(p->walked ? b->ncorner : b->nedge);
     for (int k = 0; k < n; k++) {
-        Corner from = c[p->turn < 0 ? n - 1 - k : k];
-        Corner to = c[p->turn < 0 ? (2 * n - 2 - k) % n : (k + 1) % n];
+        int next = k + 1 < n ? k + 1 : 0; /* clockwise: backwards when p turns the other way */
+        Corner from = c[p->turn < 0 ? n - 1 - k : k], to = c[p->turn < 0 ? n - 1 - next : next];
         if (p->walked)
             b->corner[b->ncorner + p->n++] = c[k];
         else if (from.x != to.x || from.y != to.y) /* a corner twice is no edge */
@@ -193,7 +193,8 @@ static void draw_block(TileWork *w, const Poly *p, int x0, int y0, uint64_t mask
     float far;
     uint64_t passed = kernels->depth_test(t->depth + i, t->face + i, (size_t)t->width, x0, y0,
                                           mask, &p->depth, &far);
-    w->stats.tested += popcount(mask), w->stats.passed += popcount(passed);
+    if (t->counting) /* the summary's totals, only when asked for */
+        w->stats.tested += popcount(mask), w->stats.passed += popcount(passed);
     if (h && !isnan(far)) /* else, as writes only come nearer, it still bounds them */
         h->far[k] = far;
 }

@@ -45,6 +45,13 @@ static bool grow(void **items, size_t *cap, size_t need, size_t size)
 
 bool bins_room(Bins *b, const Poly *p, int n)
 {
+    bool room = b->npoly < b->cap_poly && b->nedge + (size_t)n <= b->cap_edge &&
+                b->ncorner + (size_t)n <= b->cap_corner;
+    for (int ty = p->y0 / TILE_SIZE; room && ty <= (p->y1 - 1) / TILE_SIZE; ty++)
+        for (int tx = p->x0 / TILE_SIZE; room && tx <= (p->x1 - 1) / TILE_SIZE; tx++)
+            room = b->bin[ty * b->tiles_x + tx].n < b->bin[ty * b->tiles_x + tx].cap;
+    if (room) /* as nearly always: nothing to grow */
+        return true;
     void *poly = b->poly, *edge = b->edge, *corner = b->corner;
     bool ok = grow(&poly, &b->cap_poly, b->npoly + 1, sizeof *b->poly) &&
               grow(&edge, &b->cap_edge, b->nedge + (size_t)n, sizeof *b->edge) &&

@@ -182,23 +182,31 @@ static const BlockKernels SSE2_KERNELS = {sse2_coverage, sse2_depth_test, sse2_f
 
 #define AVX2 __attribute__((target("avx2")))
 
+AVX2 static __m256i avx2_edge_row(const int32_t *g, const int32_t *a, const int32_t *b, int k,
+                                  int j) /* edge k's values along row j */
+{
+    return _mm256_add_epi32(_mm256_set1_epi32(g[k] + j * b[k]),
+                            _mm256_mullo_epi32(_mm256_set_epi32(7, 6, 5, 4, 3, 2, 1, 0),
+                                               _mm256_set1_epi32(a[k])));
+}
+
 AVX2 static uint64_t avx2_coverage(const int32_t *g, const int32_t *a, const int32_t *b, int n,
                                    uint64_t box)
 {
-    __m256i lanes = _mm256_set_epi32(7, 6, 5, 4, 3, 2, 1, 0), row[8];
     int first = __builtin_ctzll(box) / 8, last = 7 - __builtin_clzll(box) / 8;
-    for (int j = first; j <= last; j++)
-        row[j] = _mm256_setzero_si256();
-    for (int k = 0; k < n; k++) { /* edge k's values along row first, then a row down */
-        __m256i v = _mm256_add_epi32(_mm256_set1_epi32(g[k] + first * b[k]),
-                                     _mm256_mullo_epi32(lanes, _mm256_set1_epi32(a[k])));
-        __m256i down = _mm256_set1_epi32(b[k]);
-        for (int j = first; j <= last; j++, v = _mm256_add_epi32(v, down))
-            row[j] = _mm256_or_si256(row[j], v);
-    }
     uint64_t outside = 0;
-    for (int j = first; j <= last; j++)
-        outside |= (uint64_t)_mm256_movemask_ps(_mm256_castsi256_ps(row[j])) << (8 * j);
+    for (int k = 0; k < n; k += 3) { /* three edges at a time; the last again if fewer */
+        int k1 = k + 1 < n ? k + 1 : k, k2 = k + 2 < n ? k + 2 : k1;
+        __m256i v0 = avx2_edge_row(g, a, b, k, first), down0 = _mm256_set1_epi32(b[k]);
+        __m256i v1 = avx2_edge_row(g, a, b, k1, first), down1 = _mm256_set1_epi32(b[k1]);
+        __m256i v2 = avx2_edge_row(g, a, b, k2, first), down2 = _mm256_set1_epi32(b[k2]);
+        for (int j = first; j <= last; j++) { /* an OR is negative when one of them is */
+            __m256i any = _mm256_or_si256(_mm256_or_si256(v0, v1), v2);
+            outside |= (uint64_t)_mm256_movemask_ps(_mm256_castsi256_ps(any)) << (8 * j);
+            v0 = _mm256_add_epi32(v0, down0), v1 = _mm256_add_epi32(v1, down1);
+            v2 = _mm256_add_epi32(v2, down2);
+        }
+    }
     return box & ~outside;
 }
 
@@ -211,39 +219,48 @@ AVX2 static float avx2_lanes_farthest(__m256 far, bool reversed)
 AVX2 static uint64_t avx2_depth_test(float *depth, int32_t *face, size_t stride, int x0, int y0,
                                      uint64_t mask, const BlockDepth *d, float *farthest)
 {
-    __m256 far = _mm256_set1_ps(d->reversed ? INFINITY : -INFINITY);
+    /* d's fields in locals: the stores below could alias them for the compiler */
+    const float gy = d->gy, unorm = d->unorm;
+    const bool reversed = d->reversed;
+    const uint64_t keep = d->keep;
+    const __m256 offset = _mm256_set1_ps(d->offset);
+    const __m256i id = _mm256_set1_epi32(d->face);
+    __m256 far = _mm256_set1_ps(reversed ? INFINITY : -INFINITY);
     __m256 x = _mm256_add_ps(_mm256_set1_ps((float)x0),
                              _mm256_set_ps(7.0f, 6.0f, 5.0f, 4.0f, 3.0f, 2.0f, 1.0f, 0.0f));
     __m256 tx = _mm256_add_ps(_mm256_set1_ps(d->a0), _mm256_mul_ps(_mm256_set1_ps(d->gx), x));
     __m256i bit = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
     uint64_t passed = 0;
-    for (int j = 0; j < 8; j++) {
+    int first = __builtin_ctzll(mask) / 8, last = 7 - __builtin_clzll(mask) / 8;
+    for (int j = first; j <= last; j++) { /* the rows with a pixel of mask */
         int bits = ROW(mask, j);
         if (!bits)
             continue;
-        __m256 z = _mm256_add_ps(_mm256_add_ps(tx, _mm256_set1_ps(d->gy * (float)(y0 + j))),
-                                 _mm256_set1_ps(d->offset));
-        if (d->unorm != 0) {
+        __m256 z = _mm256_add_ps(_mm256_add_ps(tx, _mm256_set1_ps(gy * (float)(y0 + j))), offset);
+        if (unorm != 0) {
             z = _mm256_min_ps(_mm256_set1_ps(1.0f), _mm256_max_ps(_mm256_setzero_ps(), z));
-            z = _mm256_cvtepi32_ps(_mm256_cvtps_epi32(_mm256_mul_ps(z, _mm256_set1_ps(d->unorm))));
+            z = _mm256_cvtepi32_ps(_mm256_cvtps_epi32(_mm256_mul_ps(z, _mm256_set1_ps(unorm))));
         }
         float *row = depth + (size_t)j * stride;
+        __m256i *f = (__m256i *)(face + (size_t)j * stride);
         __m256 stored = _mm256_loadu_ps(row);
-        __m256 win = d->reversed ? _mm256_cmp_ps(z, stored, _CMP_GT_OQ)
-                                 : _mm256_cmp_ps(z, stored, _CMP_LT_OQ);
-        int won = _mm256_movemask_ps(win) & bits, kept = won & ROW(d->keep, j);
+        __m256 win = reversed ? _mm256_cmp_ps(z, stored, _CMP_GT_OQ)
+                              : _mm256_cmp_ps(z, stored, _CMP_LT_OQ);
+        int won = _mm256_movemask_ps(win) & bits, kept = won & ROW(keep, j);
         passed |= (uint64_t)won << (8 * j);
-        if (kept) { /* a blend and a whole store: a masked store is slow on some CPUs */
+        if (kept == 0xff) { /* the whole row: stored as it is, no blend */
+            stored = z;
+            _mm256_storeu_ps(row, z);
+            _mm256_storeu_si256(f, id);
+        } else if (kept) { /* a blend and a whole store: a masked store is slow on some CPUs */
             __m256i m = _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(kept), bit), bit);
-            __m256i *f = (__m256i *)(face + (size_t)j * stride);
             stored = _mm256_blendv_ps(stored, z, _mm256_castsi256_ps(m));
             _mm256_storeu_ps(row, stored);
-            _mm256_storeu_si256(f, _mm256_blendv_epi8(_mm256_loadu_si256(f),
-                                                      _mm256_set1_epi32(d->face), m));
+            _mm256_storeu_si256(f, _mm256_blendv_epi8(_mm256_loadu_si256(f), id, m));
         }
-        far = d->reversed ? _mm256_min_ps(far, stored) : _mm256_max_ps(far, stored);
+        far = reversed ? _mm256_min_ps(far, stored) : _mm256_max_ps(far, stored);
     }
-    *farthest = every_row(mask) ? avx2_lanes_farthest(far, d->reversed) : NAN;
+    *farthest = every_row(mask) ? avx2_lanes_farthest(far, reversed) : NAN;
     return passed;
 }
 
