@@ -9,8 +9,6 @@
 /* a / b rounded towards minus infinity, b > 0. */
 static inline int64_t floor_div(int64_t a, int64_t b)
 {
-    if (__builtin_constant_p(b) && b > 0 && (b & (b - 1)) == 0)
-        return a >> __builtin_ctzll((unsigned long long)b); /* a shift floors: -7 >> 1 is -4 */
     int64_t q = a / b; /* rounded towards zero */
     return (a % b != 0 && a < 0) ? q - 1 : q;
 }
@@ -18,8 +16,6 @@ static inline int64_t floor_div(int64_t a, int64_t b)
 /* a / b rounded towards plus infinity, b > 0. */
 static inline int64_t ceil_div(int64_t a, int64_t b)
 {
-    if (__builtin_constant_p(b) && b > 0 && (b & (b - 1)) == 0)
-        return (a >> __builtin_ctzll((unsigned long long)b)) + ((a & (b - 1)) != 0);
     int64_t q = a / b;
     return (a % b != 0 && a > 0) ? q + 1 : q;
 }

@@ -66,22 +66,6 @@ static void int64_extremes_do_not_overflow(void **state)
     expect_div(ceil_div(1, INT64_MAX), 1, "ceil(1/INT64_MAX)");
 }
 
-/* A divisor the compiler knows to be a power of two takes a shift (the
- * sub-pixel S of the scanline lessons); a divisor it cannot know takes C's
- * division. Both give the same quotients, both ways rounded. */
-static void a_known_power_of_two_divides_as_any_divisor(void **state)
-{
-    (void)state;
-    volatile int64_t unknown = 256; /* read at run time: the general path */
-    const int64_t values[] = {INT64_MIN, INT64_MIN + 1, -65537, -512, -257, -256, -255, -1,
-                              0, 1, 255, 256, 257, 65537, INT64_MAX - 1, INT64_MAX};
-    for (size_t k = 0; k < sizeof values / sizeof values[0]; k++) {
-        int64_t a = values[k], b = unknown;
-        expect_div(floor_div(a, 256), floor_div(a, b), "floor_div(a, 256) as a shift");
-        expect_div(ceil_div(a, 256), ceil_div(a, b), "ceil_div(a, 256) as a shift");
-    }
-}
-
 static void floor_and_ceil_bracket_the_quotient(void **state)
 {
     (void)state;
@@ -105,7 +89,6 @@ int main(void)
         cmocka_unit_test(exact_multiples_are_not_rounded),
         cmocka_unit_test(int64_extremes_do_not_overflow),
         cmocka_unit_test(floor_and_ceil_bracket_the_quotient),
-        cmocka_unit_test(a_known_power_of_two_divides_as_any_divisor),
     };
     return cmocka_run_group_tests_name("intmath", tests, NULL, NULL);
 }
