@@ -88,26 +88,24 @@ static void bin_polygon(Bins *b, Poly *p, const Corner *c, int n)
 /* Its box on the screen, whether the far plane may discard fragments; binned. */
 static void set_up_polygon(Target *t, const Corner *c, int n, int turn, int face, double inv_far)
 {
-    Poly p = {.turn = turn, .inv_far = inv_far, .x0 = t->width, .y0 = t->height};
-    double near_inv = 0, far_inv = INFINITY;
-    for (int k = 0; k < n; k++) {
-        p.x0 = imin(p.x0, (int)imax(0, (int)first_centre_at_or_after(c[k].x)));
-        p.y0 = imin(p.y0, (int)imax(0, (int)first_centre_at_or_after(c[k].y)));
-        p.x1 = imax(p.x1, imin(t->width, (int)floor_div(c[k].x - HALF_PIXEL, S) + 1));
-        p.y1 = imax(p.y1, imin(t->height, (int)floor_div(c[k].y - HALF_PIXEL, S) + 1));
-        near_inv = c[k].inv_d > near_inv ? c[k].inv_d : near_inv;
-        far_inv = c[k].inv_d < far_inv ? c[k].inv_d : far_inv;
-    }
+    Corner lo, hi; /* the least and largest x, y and 1/d of the corners */
+    corners_range(c, n, &lo, &hi);
+    Poly p = {.turn = turn, .inv_far = inv_far, /* the pixel centres of the box, on the screen */
+              .x0 = imin(t->width, imax(0, (int)first_centre_at_or_after(lo.x))),
+              .y0 = imin(t->height, imax(0, (int)first_centre_at_or_after(lo.y))),
+              .x1 = imax(0, imin(t->width, (int)floor_div(hi.x - HALF_PIXEL, S) + 1)),
+              .y1 = imax(0, imin(t->height, (int)floor_div(hi.y - HALF_PIXEL, S) + 1))};
     if (p.x0 >= p.x1 || p.y0 >= p.y1)
         return; /* no pixel centre on the screen */
     /* Every 1/d inside lies between the corners' (up to rounding, far below
      * FAR_SLACK): unless one is near the far plane, nothing is discarded. */
-    p.walked = turn == 0 || !(far_inv - inv_far > FAR_SLACK * near_inv);
+    p.walked = turn == 0 || !(lo.inv_d - inv_far > FAR_SLACK * hi.inv_d);
     p.depth = block_depth((FastRaster *)t->depth_setup, face, &p.plain);
     Bins *b = bins_of(t);
-    if (b && (b->npoly >= FLUSH_POLYGONS || !bins_room(b, &p, n)))
-        fast_finish(t); /* draw what waits, then there is room */
-    if (b && bins_room(b, &p, n))
+    bool room = b && b->npoly < FLUSH_POLYGONS && bins_room(b, &p, n);
+    if (b && !room) /* draw what waits, then there is room */
+        fast_finish(t), room = bins_room(b, &p, n);
+    if (room)
         bin_polygon(b, &p, c, n);
 }
 
@@ -172,7 +170,7 @@ static uint64_t block_coverage(const TileWork *w, const EdgeFn *e, uint32_t n, i
 static void draw_block(TileWork *w, const Poly *p, int x0, int y0, uint64_t mask)
 {
     Target *t = w->t;
-    HierarchicalZ *h = w->view.hiz;
+    HierarchicalZ *h = (x0 | y0) & LAST ? NULL : w->view.hiz; /* a window: no tile */
     int k = h ? y0 / BLOCK_SIZE * h->tiles_x + x0 / BLOCK_SIZE : 0;
     if (w->fr->count) { /* every fragment counted, one by one */
         for (int bit = 0; bit < BLOCK_SIZE * BLOCK_SIZE; bit++)
@@ -199,18 +197,22 @@ static void draw_block(TileWork *w, const Poly *p, int x0, int y0, uint64_t mask
         h->far[k] = far;
 }
 
-/* p's blocks in the tile, row by row, each only where p's box is. */
+/* p's blocks in the tile, row by row, each only where p's box is; or,
+ * when p's part of the tile fits in 8 x 8 pixels, one window there. */
 static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
 {
+    int wx, wy;
+    uint64_t window = window_of(w, p, &wx, &wy), mask; /* extras/engine.c */
+    if (window) { /* small: its window's pixels at once, not each block's */
+        if ((mask = block_coverage(w, e, p->n, wx, wy, window)))
+            draw_block(w, p, wx, wy, mask);
+        return;
+    }
     for (int y0 = imax(p->y0, w->ty0) & ~LAST; y0 < imin(p->y1, w->ty1); y0 += BLOCK_SIZE)
         for (int x0 = imax(p->x0, w->tx0) & ~LAST; x0 < imin(p->x1, w->tx1); x0 += BLOCK_SIZE) {
-            int left = imax(p->x0 - x0, 0), right = imin(p->x1 - x0, BLOCK_SIZE);
-            int top = imax(p->y0 - y0, 0), bottom = imin(p->y1 - y0, BLOCK_SIZE);
-            uint64_t row = ((uint64_t)1 << right) - ((uint64_t)1 << left);
-            uint64_t box = row * 0x0101010101010101ull & ~(uint64_t)0 << (BLOCK_SIZE * top) &
-                           ~(uint64_t)0 >> (BLOCK_SIZE * (BLOCK_SIZE - bottom));
-            uint64_t mask = block_coverage(w, e, p->n, x0, y0, box);
-            if (mask)
+            uint64_t box = box_mask(imax(p->x0 - x0, 0), imin(p->x1 - x0, BLOCK_SIZE),
+                                    imax(p->y0 - y0, 0), imin(p->y1 - y0, BLOCK_SIZE));
+            if ((mask = block_coverage(w, e, p->n, x0, y0, box)))
                 draw_block(w, p, x0, y0, mask);
         }
 }

@@ -99,6 +99,8 @@ Bins *bins_of(Target *t)
 {
     FastRaster *fr = (FastRaster *)t->depth_setup;
     Bins *b = fr->bins;
+    if (b && b->target == t && b->width == t->width && b->height == t->height)
+        return b; /* as nearly always */
     if (b && b->target != t && b->npoly > 0)
         fast_finish((Target *)b->target);
     int tiles_x = (t->width + TILE_SIZE - 1) / TILE_SIZE;
@@ -112,7 +114,7 @@ Bins *bins_of(Target *t)
             b->tiles_x = tiles_x, b->tiles_y = tiles_y;
     }
     if (b)
-        b->target = t;
+        b->target = t, b->width = t->width, b->height = t->height;
     return b;
 }
 
@@ -204,6 +206,17 @@ bool corner_in_range(const ScreenVertex *v)
 {
     return isfinite(v->x) && isfinite(v->y) && isfinite(v->d) && v->d > 0 &&
            fabs(v->x) <= SCANLINE_MAX_COORD && fabs(v->y) <= SCANLINE_MAX_COORD;
+}
+
+void corners_range(const Corner *c, int n, Corner *lo, Corner *hi)
+{
+    *lo = c[0], *hi = c[0];
+    for (int k = 1; k < n; k++) {
+        lo->x = c[k].x < lo->x ? c[k].x : lo->x, hi->x = c[k].x > hi->x ? c[k].x : hi->x;
+        lo->y = c[k].y < lo->y ? c[k].y : lo->y, hi->y = c[k].y > hi->y ? c[k].y : hi->y;
+        lo->inv_d = c[k].inv_d < lo->inv_d ? c[k].inv_d : lo->inv_d;
+        hi->inv_d = c[k].inv_d > hi->inv_d ? c[k].inv_d : hi->inv_d;
+    }
 }
 
 /* Snapping moves a corner by up to 1/512 pixel; its 1/d moves along the
@@ -396,6 +409,32 @@ uint64_t long_edge_coverage(const EdgeFn *e, int64_t at)
     for (int bit = 0; bit < 64; bit++)
         mask |= (uint64_t)(at + (int64_t)e->a * (bit % 8) + (int64_t)e->b * (bit / 8) >= 0) << bit;
     return mask;
+}
+
+/* ---- A small polygon's window ------------------------------------------ */
+
+uint64_t box_mask(int left, int right, int top, int bottom)
+{
+    uint64_t row = ((uint64_t)1 << right) - ((uint64_t)1 << left);
+    return row * 0x0101010101010101ull & ~(uint64_t)0 << (BLOCK_SIZE * top) &
+           ~(uint64_t)0 >> (BLOCK_SIZE * (BLOCK_SIZE - bottom));
+}
+
+/* When p's part of the tile fits in 8 x 8 pixels: its pixels in the 8 x 8
+ * window at (*wx, *wy), a block if they lie in one, else at their first,
+ * moved left to stay in the tile (no other thread's pixel). Its pixels keep
+ * their place in no window but a block: a cutout is drawn by blocks. */
+uint64_t window_of(const TileWork *w, const Poly *p, int *wx, int *wy)
+{
+    int x0 = p->x0 > w->tx0 ? p->x0 : w->tx0, x1 = p->x1 < w->tx1 ? p->x1 : w->tx1;
+    int y0 = p->y0 > w->ty0 ? p->y0 : w->ty0, y1 = p->y1 < w->ty1 ? p->y1 : w->ty1;
+    if (x1 - x0 > BLOCK_SIZE || y1 - y0 > BLOCK_SIZE || w->tx1 - w->tx0 < BLOCK_SIZE ||
+        p->depth.keep != ~(uint64_t)0)
+        return 0;
+    bool block = x0 / BLOCK_SIZE == (x1 - 1) / BLOCK_SIZE && y0 / BLOCK_SIZE == (y1 - 1) / BLOCK_SIZE;
+    *wx = block ? x0 & ~(BLOCK_SIZE - 1) : x0 < w->tx1 - BLOCK_SIZE ? x0 : w->tx1 - BLOCK_SIZE;
+    *wy = block ? y0 & ~(BLOCK_SIZE - 1) : y0;
+    return box_mask(x0 - *wx, x1 - *wx, y0 - *wy, y1 - *wy);
 }
 
 /* Nothing waits any more: the picture starts again. */

@@ -24,7 +24,7 @@ typedef struct {
 typedef struct { uint32_t *at; size_t n, cap; } Bin; /* polygons, in the order drawn */
 
 struct Bins {
-    const Target *target; int tiles_x, tiles_y;
+    const Target *target; int tiles_x, tiles_y, width, height;
     Bins *next; /* the bins of faces set up after these (held.c) */
     Poly *poly; size_t npoly, cap_poly;
     EdgeFn *edge; size_t nedge, cap_edge;
@@ -55,12 +55,15 @@ void set_up_held_faces(Target *t); /* held.c: by the threads, into chained bins 
 BlockDepth block_depth(const FastRaster *fr, int face, bool *plain);
 bool corner_in_range(const ScreenVertex *v);
 void corners_on_plane(Corner *c, const ScreenVertex *v, int n);
+void corners_range(const Corner *c, int n, Corner *lo, Corner *hi); /* each least, largest */
 void walk_in_tile(TileWork *w, const Poly *p, const Corner *c);
 bool test_pixel(TileWork *w, const BlockDepth *d, int x, int y);
 DepthSetup plane_setup(const BlockDepth *d); /* for hiz_bound: d's plane, format, mapping */
 void tile_work_begin(TileWork *w, Target *t, const FastRaster *fr); /* the view, the kernels */
 void tile_work_end(TileWork *w); /* its counts added to t's */
 void tile_read_again(TileWork *w); /* every block of the tile, after lesson 04's walk */
+uint64_t box_mask(int left, int right, int top, int bottom); /* of a block, each in 0..8 */
+uint64_t window_of(const TileWork *w, const Poly *p, int *wx, int *wy); /* 0: p larger */
 uint64_t long_edge_coverage(const EdgeFn *e, int64_t at); /* at: e at the block's first */
 void clear_fast(Target *t); /* and lesson 09's hiz_clear */
 

@@ -117,15 +117,13 @@ static int sse2_half(float *depth, int32_t *face, __m128 tx, __m128 ty, int bits
     __m128 value = sse2_encode(z, d->unorm), stored = _mm_loadu_ps(depth);
     __m128 win = d->reversed ? _mm_cmpgt_ps(value, stored) : _mm_cmplt_ps(value, stored);
     int passed = _mm_movemask_ps(win) & bits, kept = passed & (int)(d->keep & 0xf);
-    if (kept) {
-        __m128i m = sse2_lanes(kept, _mm_set_epi32(8, 4, 2, 1));
-        __m128i f = _mm_loadu_si128((const __m128i *)face);
-        stored = _mm_or_ps(_mm_and_ps(_mm_castsi128_ps(m), value),
-                           _mm_andnot_ps(_mm_castsi128_ps(m), stored));
-        _mm_storeu_ps(depth, stored);
-        _mm_storeu_si128((__m128i *)face, _mm_or_si128(_mm_and_si128(m, _mm_set1_epi32(d->face)),
-                                                       _mm_andnot_si128(m, f)));
-    }
+    __m128i m = sse2_lanes(kept, _mm_set_epi32(8, 4, 2, 1)); /* stored whole: no branch */
+    __m128i f = _mm_loadu_si128((const __m128i *)face);
+    stored = _mm_or_ps(_mm_and_ps(_mm_castsi128_ps(m), value),
+                       _mm_andnot_ps(_mm_castsi128_ps(m), stored));
+    _mm_storeu_ps(depth, stored);
+    _mm_storeu_si128((__m128i *)face, _mm_or_si128(_mm_and_si128(m, _mm_set1_epi32(d->face)),
+                                                   _mm_andnot_si128(m, f)));
     *far = d->reversed ? _mm_min_ps(*far, stored) : _mm_max_ps(*far, stored);
     return passed;
 }
@@ -150,10 +148,9 @@ static uint64_t sse2_depth_test(float *depth, int32_t *face, size_t stride, int 
     __m128 tx_lo = _mm_add_ps(a0, _mm_mul_ps(gx, x_lo)), tx_hi = _mm_add_ps(a0, _mm_mul_ps(gx, x_hi));
     BlockDepth lo = *d, hi = *d;
     uint64_t passed = 0;
-    for (int j = 0; j < 8; j++) {
+    int first = __builtin_ctzll(mask) / 8, last = 7 - __builtin_clzll(mask) / 8;
+    for (int j = first; j <= last; j++) { /* the rows of mask, every one whole */
         int bits = ROW(mask, j);
-        if (!bits)
-            continue;
         __m128 ty = _mm_set1_ps(d->gy * (float)(y0 + j));
         lo.keep = d->keep >> (8 * j), hi.keep = d->keep >> (8 * j + 4);
         size_t at = (size_t)j * stride;
@@ -232,10 +229,13 @@ AVX2 static uint64_t avx2_depth_test(float *depth, int32_t *face, size_t stride,
     __m256i bit = _mm256_set_epi32(128, 64, 32, 16, 8, 4, 2, 1);
     uint64_t passed = 0;
     int first = __builtin_ctzll(mask) / 8, last = 7 - __builtin_clzll(mask) / 8;
-    for (int j = first; j <= last; j++) { /* the rows with a pixel of mask */
+    /* Every row from mask's first to its last is stored whole, even when no
+     * pixel passes: a branch on a row's bits, often mispredicted, costs more
+     * than a blend. Only in a block the polygon covers whole, where rows
+     * tend to pass alike, a row that passes whole skips the blend. */
+    bool whole = mask == ~(uint64_t)0;
+    for (int j = first; j <= last; j++) {
         int bits = ROW(mask, j);
-        if (!bits)
-            continue;
         __m256 z = _mm256_add_ps(_mm256_add_ps(tx, _mm256_set1_ps(gy * (float)(y0 + j))), offset);
         if (unorm != 0) {
             z = _mm256_min_ps(_mm256_set1_ps(1.0f), _mm256_max_ps(_mm256_setzero_ps(), z));
@@ -248,11 +248,11 @@ AVX2 static uint64_t avx2_depth_test(float *depth, int32_t *face, size_t stride,
                               : _mm256_cmp_ps(z, stored, _CMP_LT_OQ);
         int won = _mm256_movemask_ps(win) & bits, kept = won & ROW(keep, j);
         passed |= (uint64_t)won << (8 * j);
-        if (kept == 0xff) { /* the whole row: stored as it is, no blend */
+        if (whole && kept == 0xff) { /* the row stored as it is, no blend */
             stored = z;
             _mm256_storeu_ps(row, z);
             _mm256_storeu_si256(f, id);
-        } else if (kept) { /* a blend and a whole store: a masked store is slow on some CPUs */
+        } else {
             __m256i m = _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(kept), bit), bit);
             stored = _mm256_blendv_ps(stored, z, _mm256_castsi256_ps(m));
             _mm256_storeu_ps(row, stored);
