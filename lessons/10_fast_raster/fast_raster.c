@@ -236,7 +236,7 @@ static void draw_tile(TileWork *w, const Bins *b, int tile)
 
 typedef struct { const Bins *b; const int *tiles; int ntiles; atomic_int next; } Work;
 
-typedef struct { Work *work; TileWork tw; } Thread;
+typedef struct { _Alignas(64) Work *work; TileWork tw; } Thread; /* no cache line shared */
 
 /* Takes tiles until none is left: no two threads share a pixel, each tile is
  * drawn in order, so the picture does not depend on who took which tile. */
@@ -258,7 +258,7 @@ void fast_finish(Target *t)
     int ntiles = b ? b->tiles_x * b->tiles_y : 0, busy = 0;
     int nthreads = fr->count ? 1 : imax(1, fr->threads), started = 1;
     int *tiles = b ? malloc((size_t)ntiles * sizeof *tiles) : NULL;
-    Thread *th = tiles ? malloc((size_t)nthreads * sizeof *th) : NULL;
+    Thread *th = tiles ? aligned_alloc(64, (size_t)nthreads * sizeof *th) : NULL;
     pthread_t *id = th ? malloc((size_t)nthreads * sizeof *id) : NULL;
     for (int k = 0; id && k < ntiles; k++)
         if (tile_busy(b, k))
