@@ -13,7 +13,6 @@
 #define S ((int64_t)SUBPIXEL_ONE) /* sub-pixel units per pixel */
 #define HALF_PIXEL ((int64_t)SUBPIXEL_HALF)
 #define POLYGON_MAX_CORNERS 256 /* more: drawn as triangles, as lesson 04 does */
-#define BLOCKS (TILE_SIZE / BLOCK_SIZE) /* blocks per tile side */
 #define LAST (BLOCK_SIZE - 1)           /* a block's last pixel, from its first */
 #define SHORT_EDGE (1 << 27)     /* |a| + |b| below it: a block's values fit in 32 bits */
 #define FAR_SLACK 1e-7           /* of 1/d: more than the scanline's rounding */
@@ -163,10 +162,10 @@ static uint64_t block_coverage(const TileWork *w, const EdgeFn *e, uint32_t n, i
     return crossing > 0 && box ? w->k->coverage(g, a, b, crossing, box) : box;
 }
 
-/* The block's pixels in mask: skipped when lesson 09's tile buffer (a tile
- * is a block) says none can pass, else tested by the kernel (plain C where
- * the screen cuts a row short), which hands back the block's farthest value
- * when it read every row. */
+/* The block's (or window's) pixels in mask: skipped when lesson 09's tile
+ * buffer (a tile is a block; a window that is none is not asked) says none
+ * can pass, else tested by the kernel (plain C where the screen cuts a row
+ * short), which hands back the block's farthest value when it read all. */
 static void draw_block(TileWork *w, const Poly *p, int x0, int y0, uint64_t mask)
 {
     Target *t = w->t;

@@ -99,8 +99,6 @@ Bins *bins_of(Target *t)
 {
     FastRaster *fr = (FastRaster *)t->depth_setup;
     Bins *b = fr->bins;
-    if (b && b->target == t && b->width == t->width && b->height == t->height)
-        return b; /* as nearly always */
     if (b && b->target != t && b->npoly > 0)
         fast_finish((Target *)b->target);
     int tiles_x = (t->width + TILE_SIZE - 1) / TILE_SIZE;
@@ -114,7 +112,7 @@ Bins *bins_of(Target *t)
             b->tiles_x = tiles_x, b->tiles_y = tiles_y;
     }
     if (b)
-        b->target = t, b->width = t->width, b->height = t->height;
+        b->target = t;
     return b;
 }
 

@@ -24,7 +24,7 @@ typedef struct {
 typedef struct { uint32_t *at; size_t n, cap; } Bin; /* polygons, in the order drawn */
 
 struct Bins {
-    const Target *target; int tiles_x, tiles_y, width, height;
+    const Target *target; int tiles_x, tiles_y;
     Bins *next; /* the bins of faces set up after these (held.c) */
     Poly *poly; size_t npoly, cap_poly;
     EdgeFn *edge; size_t nedge, cap_edge;
