@@ -16,7 +16,7 @@
 #define LAST (BLOCK_SIZE - 1)           /* a block's last pixel, from its first */
 #define SHORT_EDGE (1 << 27)     /* |a| + |b| below it: a block's values fit in 32 bits */
 #define FAR_SLACK 1e-7           /* of 1/d: more than the scanline's rounding */
-#define FLUSH_POLYGONS (1 << 16) /* drawn once this many wait: the bins stay small */
+#define FLUSH_POLYGONS (1 << 13) /* drawn once this many wait: the bins stay small */
 
 static int imin(int a, int b) { return a < b ? a : b; }
 static int imax(int a, int b) { return a > b ? a : b; }
