@@ -163,13 +163,13 @@ static uint64_t block_coverage(const TileWork *w, const EdgeFn *e, uint32_t n, i
 }
 
 /* The block's (or window's) pixels in mask: skipped when lesson 09's tile
- * buffer (a tile is a block; a window that is none is not asked) says none
- * can pass, else tested by the kernel (plain C where the screen cuts a row
- * short), which hands back the block's farthest value when it read all. */
-static void draw_block(TileWork *w, const Poly *p, int x0, int y0, uint64_t mask)
+ * buffer (a tile is a block; a window is not asked) says none can pass,
+ * else tested by the kernel (plain C where the screen cuts a row short),
+ * which hands back the block's farthest value when it read all. */
+static void draw_block(TileWork *w, const Poly *p, int x0, int y0, uint64_t mask, bool window)
 {
     Target *t = w->t;
-    HierarchicalZ *h = (x0 | y0) & LAST ? NULL : w->view.hiz; /* a window: no tile */
+    HierarchicalZ *h = window ? NULL : w->view.hiz;
     int k = h ? y0 / BLOCK_SIZE * h->tiles_x + x0 / BLOCK_SIZE : 0;
     if (w->fr->count) { /* every fragment counted, one by one */
         for (int bit = 0; bit < BLOCK_SIZE * BLOCK_SIZE; bit++)
@@ -197,22 +197,23 @@ static void draw_block(TileWork *w, const Poly *p, int x0, int y0, uint64_t mask
 }
 
 /* p's blocks in the tile, row by row, each only where p's box is; or,
- * when p's part of the tile fits in 8 x 8 pixels, one window there. */
+ * when p's part of the tile fits in 16 x 16 pixels, up to 4 windows there. */
 static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
 {
-    int wx, wy;
-    uint64_t window = window_of(w, p, &wx, &wy), mask; /* extras/engine.c */
-    if (window) { /* small: its window's pixels at once, not each block's */
-        if ((mask = block_coverage(w, e, p->n, wx, wy, window)))
-            draw_block(w, p, wx, wy, mask);
+    Window win[4];
+    int windows = windows_of(w, p, win); /* extras/engine.c */
+    uint64_t mask;
+    for (int k = 0; k < windows; k++) /* small: its pixels in 8 x 8 windows */
+        if ((mask = block_coverage(w, e, p->n, win[k].x, win[k].y, win[k].box)))
+            draw_block(w, p, win[k].x, win[k].y, mask, true);
+    if (windows > 0)
         return;
-    }
     for (int y0 = imax(p->y0, w->ty0) & ~LAST; y0 < imin(p->y1, w->ty1); y0 += BLOCK_SIZE)
         for (int x0 = imax(p->x0, w->tx0) & ~LAST; x0 < imin(p->x1, w->tx1); x0 += BLOCK_SIZE) {
             uint64_t box = box_mask(imax(p->x0 - x0, 0), imin(p->x1 - x0, BLOCK_SIZE),
                                     imax(p->y0 - y0, 0), imin(p->y1 - y0, BLOCK_SIZE));
             if ((mask = block_coverage(w, e, p->n, x0, y0, box)))
-                draw_block(w, p, x0, y0, mask);
+                draw_block(w, p, x0, y0, mask, false);
         }
 }
 

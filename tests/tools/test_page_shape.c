@@ -1,6 +1,6 @@
 /* test_page_shape.c: a lesson page a student can follow, short and pictured.
  *
- * Every lesson page docs/0*.md:
+ * Every lesson page docs/NN_*.md:
  *   - shows a picture on its first screen: an image (a line with "![") within
  *     its first FIRST_SCREEN_LINES lines, under the title and the paragraph
  *     that states the lesson's idea;
@@ -86,8 +86,8 @@ static void every_lesson_page_is_short_and_pictured(void **state)
 {
     (void)state;
     glob_t g;
-    if (glob("docs/0*.md", 0, NULL, &g) != 0 || g.gl_pathc == 0)
-        fail_msg("no lesson page docs/0*.md (run the test from the top of the tree)");
+    if (glob("docs/[0-9][0-9]_*.md", 0, NULL, &g) != 0 || g.gl_pathc == 0)
+        fail_msg("no lesson page docs/NN_*.md (run the test from the top of the tree)");
     int failures = 0;
     for (size_t i = 0; i < g.gl_pathc; i++) {
         const char *page = g.gl_pathv[i];

@@ -418,21 +418,26 @@ uint64_t box_mask(int left, int right, int top, int bottom)
            ~(uint64_t)0 >> (BLOCK_SIZE * (BLOCK_SIZE - bottom));
 }
 
-/* When p's part of the tile fits in 8 x 8 pixels: its pixels in the 8 x 8
- * window at (*wx, *wy), a block if they lie in one, else at their first,
- * moved left to stay in the tile (no other thread's pixel). Its pixels keep
- * their place in no window but a block: a cutout is drawn by blocks. */
-uint64_t window_of(const TileWork *w, const Poly *p, int *wx, int *wy)
+/* When p's part of the tile fits in 16 x 16 pixels: that part in up to 4
+ * pieces of at most 8 x 8, each in the 8 x 8 window at its first pixel,
+ * moved left to stay in the tile (no other thread's pixel). A cutout keeps
+ * pixels by their place in a block: it is drawn by blocks. */
+int windows_of(const TileWork *w, const Poly *p, Window win[4])
 {
     int x0 = p->x0 > w->tx0 ? p->x0 : w->tx0, x1 = p->x1 < w->tx1 ? p->x1 : w->tx1;
     int y0 = p->y0 > w->ty0 ? p->y0 : w->ty0, y1 = p->y1 < w->ty1 ? p->y1 : w->ty1;
-    if (x1 - x0 > BLOCK_SIZE || y1 - y0 > BLOCK_SIZE || w->tx1 - w->tx0 < BLOCK_SIZE ||
+    if (x1 - x0 > 2 * BLOCK_SIZE || y1 - y0 > 2 * BLOCK_SIZE || w->tx1 - w->tx0 < BLOCK_SIZE ||
         p->depth.keep != ~(uint64_t)0)
         return 0;
-    bool block = x0 / BLOCK_SIZE == (x1 - 1) / BLOCK_SIZE && y0 / BLOCK_SIZE == (y1 - 1) / BLOCK_SIZE;
-    *wx = block ? x0 & ~(BLOCK_SIZE - 1) : x0 < w->tx1 - BLOCK_SIZE ? x0 : w->tx1 - BLOCK_SIZE;
-    *wy = block ? y0 & ~(BLOCK_SIZE - 1) : y0;
-    return box_mask(x0 - *wx, x1 - *wx, y0 - *wy, y1 - *wy);
+    int n = 0;
+    for (int y = y0; y < y1; y += BLOCK_SIZE)
+        for (int x = x0; x < x1; x += BLOCK_SIZE, n++) {
+            int right = x + BLOCK_SIZE < x1 ? x + BLOCK_SIZE : x1;
+            int bottom = y + BLOCK_SIZE < y1 ? y + BLOCK_SIZE : y1;
+            win[n].x = x < w->tx1 - BLOCK_SIZE ? x : w->tx1 - BLOCK_SIZE, win[n].y = y;
+            win[n].box = box_mask(x - win[n].x, right - win[n].x, 0, bottom - y);
+        }
+    return n;
 }
 
 /* Nothing waits any more: the picture starts again. */

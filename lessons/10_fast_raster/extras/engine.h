@@ -63,7 +63,8 @@ void tile_work_begin(TileWork *w, Target *t, const FastRaster *fr); /* the view,
 void tile_work_end(TileWork *w); /* its counts added to t's */
 void tile_read_again(TileWork *w); /* every block of the tile, after lesson 04's walk */
 uint64_t box_mask(int left, int right, int top, int bottom); /* of a block, each in 0..8 */
-uint64_t window_of(const TileWork *w, const Poly *p, int *wx, int *wy); /* 0: p larger */
+typedef struct { int x, y; uint64_t box; } Window; /* 8 x 8 pixels at (x, y), of box */
+int windows_of(const TileWork *w, const Poly *p, Window win[4]); /* 0: p larger */
 uint64_t long_edge_coverage(const EdgeFn *e, int64_t at); /* at: e at the block's first */
 void clear_fast(Target *t); /* and lesson 09's hiz_clear */
 
