@@ -228,7 +228,7 @@ static void draw_tile(TileWork *w, const Bins *b, int tile)
         for (size_t k = 0; k < b->bin[tile].n; k++) {
             const Poly *p = &b->poly[b->bin[tile].at[k]];
             if (!p->walked)
-                draw_in_tile(w, p, &b->edge[p->first]);
+                (w->fr->simd == SIMD_PIXELS ? draw_pixels : draw_in_tile)(w, p, &b->edge[p->first]);
             else /* lesson 04's walk, then every block's farthest anew */
                 walk_in_tile(w, p, &b->corner[p->first]), tile_read_again(w);
         }

@@ -17,7 +17,7 @@
 #define TILE_SIZE 64 /* pixels: a tile is 8 x 8 blocks */
 #define BLOCK_SIZE 8 /* pixels: a block row is one AVX2 register of floats */
 
-typedef enum { SIMD_NONE, SIMD_SSE2, SIMD_AVX2 } Simd;
+typedef enum { SIMD_PIXELS, SIMD_NONE, SIMD_SSE2, SIMD_AVX2 } Simd; /* pixels: no blocks */
 typedef struct Bins Bins; /* what waits for fast_finish (extras/engine.h) */
 typedef struct Held Held; /* faces held back for the threads to set up */
 

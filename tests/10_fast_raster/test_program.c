@@ -1,10 +1,11 @@
 /* test_program.c: build/bin/10_fast_raster run end to end. Its pictures are
  * lesson 09's, exactly: the face of every pixel (--id-out) and its depth
  * (--depth-out, the same float bits) on every built-in scene, with every
- * --simd this machine runs and 1, 2 and 3 threads; lesson 07's in the other
- * depth formats and mappings, with a polygon offset, and with a far plane
- * that cuts the scene (lesson 04's walk); the fragments it counts when asked
- * to count (lesson 08's: no block skipped); bad input. */
+ * --simd this machine runs (and pixels, without blocks) and 1, 2 and 3
+ * threads; lesson 07's in the other depth formats and mappings, with a
+ * polygon offset, and with a far plane that cuts the scene (lesson 04's
+ * walk); the fragments it counts when asked to count (lesson 08's: no block
+ * skipped); bad input. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -110,6 +111,12 @@ static void plain_c_draws_lesson_09s_pictures(void **state)
 {
     (void)state;
     expect_every_scene_like_lesson_09("none");
+}
+
+static void pixels_without_blocks_draw_lesson_09s_pictures(void **state)
+{
+    (void)state;
+    expect_every_scene_like_lesson_09("pixels");
 }
 
 static void sse2_draws_lesson_09s_pictures(void **state)
@@ -269,7 +276,7 @@ static void expect_refused(const char *flag, const char *value, const char *mess
 static void bad_command_lines_are_refused_with_status_2(void **state)
 {
     (void)state;
-    expect_refused("--simd", "mmx", "--simd: 'mmx' is not one of none, sse2, avx2");
+    expect_refused("--simd", "mmx", "--simd: 'mmx' is not one of none, sse2, avx2, pixels");
     expect_refused("--threads", "0", "--threads: 0 is out of range (1 to 256)");
     expect_refused("--threads", "257", "--threads: 257 is out of range (1 to 256)");
     expect_refused("--threads", "two", "--threads: 'two' is not a whole number");
@@ -281,6 +288,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(plain_c_draws_lesson_09s_pictures),
+        cmocka_unit_test(pixels_without_blocks_draw_lesson_09s_pictures),
         cmocka_unit_test(sse2_draws_lesson_09s_pictures),
         cmocka_unit_test(avx2_draws_lesson_09s_pictures),
         cmocka_unit_test(other_depth_buffers_draw_lesson_07s_pictures),

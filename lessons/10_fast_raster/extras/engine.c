@@ -440,6 +440,22 @@ int windows_of(const TileWork *w, const Poly *p, Window win[4])
     return n;
 }
 
+/* --simd pixels, the page's "bins" step: p's part of the tile without
+ * blocks, each pixel of its box inside every edge tested in plain C. */
+void draw_pixels(TileWork *w, const Poly *p, const EdgeFn *e)
+{
+    int x0 = p->x0 > w->tx0 ? p->x0 : w->tx0, x1 = p->x1 < w->tx1 ? p->x1 : w->tx1;
+    int y0 = p->y0 > w->ty0 ? p->y0 : w->ty0, y1 = p->y1 < w->ty1 ? p->y1 : w->ty1;
+    for (int y = y0; y < y1; y++)
+        for (int x = x0; x < x1; x++) {
+            bool inside = true;
+            for (uint32_t k = 0; k < p->n && inside; k++)
+                inside = (int64_t)e[k].a * x + (int64_t)e[k].b * y + e[k].c >= 0;
+            if (inside)
+                test_pixel(w, &p->depth, x, y);
+        }
+}
+
 /* Nothing waits any more: the picture starts again. */
 void clear_fast(Target *t)
 {

@@ -43,8 +43,7 @@ typedef struct { /* what one thread needs to draw a tile */
 uint64_t popcount(uint64_t mask);
 int64_t snap(double pixels); /* lesson 04's floor(pixels S + 1/2), without a call */
 
-/* engine.c: the bins' memory, lesson 07's set-up of a face, lesson 04's
- * corners and walk, a fragment in plain C (counted when counting). */
+/* engine.c: bins, set-up, lesson 04's walk, a fragment in plain C. */
 Bins *bins_of(Target *t);
 bool bins_room(Bins *b, const Poly *p, int n); /* for p, of n corners */
 void bins_empty(Bins *b); /* and the bins chained after it, unchained */
@@ -65,6 +64,7 @@ void tile_read_again(TileWork *w); /* every block of the tile, after lesson 04's
 uint64_t box_mask(int left, int right, int top, int bottom); /* of a block, each in 0..8 */
 typedef struct { int x, y; uint64_t box; } Window; /* 8 x 8 pixels at (x, y), of box */
 int windows_of(const TileWork *w, const Poly *p, Window win[4]); /* 0: p larger */
+void draw_pixels(TileWork *w, const Poly *p, const EdgeFn *e); /* --simd pixels */
 uint64_t long_edge_coverage(const EdgeFn *e, int64_t at); /* at: e at the block's first */
 void clear_fast(Target *t); /* and lesson 09's hiz_clear */
 

@@ -16,7 +16,8 @@ enum { FLAG_SIMD, FLAG_THREADS, FLAG_FORMAT, FLAG_MAPPING, FLAG_OFFSET, FLAG_CLA
 
 static const LessonFlag FLAGS[FLAG_COUNT] = {
     [FLAG_SIMD] = {"--simd", "S", "none (plain C), sse2 or avx2: how many pixels of a block "
-                                  "at once (default: the widest this machine has)"},
+                                  "at once (default: the widest this machine has); pixels: "
+                                  "no blocks, each pixel of a polygon's box in plain C"},
     [FLAG_THREADS] = {"--threads", "N", "threads drawing tiles, 1 to 256 (default: the "
                                         "machine's cores); the picture is the same for any N"},
     [FLAG_FORMAT] = {"--depth-format", "F", "what the depth buffer stores: unorm16, unorm24 "
@@ -30,8 +31,8 @@ static const LessonFlag FLAGS[FLAG_COUNT] = {
                                            "default: no limit)"},
 };
 
-static const char *const SIMD_NAMES[] = {[SIMD_NONE] = "none", [SIMD_SSE2] = "sse2",
-                                         [SIMD_AVX2] = "avx2"};
+static const char *const SIMD_NAMES[] = {[SIMD_PIXELS] = "pixels", [SIMD_NONE] = "none",
+                                         [SIMD_SSE2] = "sse2", [SIMD_AVX2] = "avx2"};
 static const char *const FORMAT_NAMES[] = {[UNORM16] = "unorm16", [UNORM24] = "unorm24",
                                            [FLOAT32] = "float32"};
 static const char *const MAPPING_NAMES[] = {[STANDARD] = "standard", [REVERSED] = "reversed"};
@@ -48,9 +49,13 @@ const char *simd_name(Simd simd)
 void print_engine(const Target *t)
 {
     const FastRaster *fr = (const FastRaster *)t->depth_setup;
-    printf("  drawn in tiles of %d x %d pixels, blocks of %d x %d, SIMD %s, %d thread%s%s\n",
-           TILE_SIZE, TILE_SIZE, BLOCK_SIZE, BLOCK_SIZE, simd_name(fr->simd), fr->threads,
-           fr->threads == 1 ? "" : "s", fr->count ? " (counting: plain C, one thread)" : "");
+    printf("  drawn in tiles of %d x %d pixels, ", TILE_SIZE, TILE_SIZE);
+    if (fr->simd == SIMD_PIXELS)
+        printf("pixel by pixel (no blocks)");
+    else
+        printf("blocks of %d x %d, SIMD %s", BLOCK_SIZE, BLOCK_SIZE, simd_name(fr->simd));
+    printf(", %d thread%s%s\n", fr->threads, fr->threads == 1 ? "" : "s",
+           fr->count ? " (counting: plain C, one thread)" : "");
     if (t->hiz && !fr->count)
         printf("  hierarchical Z, %dx%d tiles (one per block): tiles tested %llu, skipped %llu\n",
                t->hiz->tile, t->hiz->tile, t->hiz->tiles_tested, t->hiz->tiles_skipped);
@@ -99,7 +104,7 @@ FastRaster fast_chosen(const Run *run)
     if (x[FLAG_THREADS])
         parse_int("--threads", x[FLAG_THREADS], 1, MAX_THREADS, &threads, &ignored);
     s.bias.mesh = &run->render.mesh;
-    Simd simd = x[FLAG_SIMD] ? (Simd)find_name(x[FLAG_SIMD], SIMD_NAMES, 3) : simd_best();
+    Simd simd = x[FLAG_SIMD] ? (Simd)find_name(x[FLAG_SIMD], SIMD_NAMES, 4) : simd_best();
     return fast_raster(s, simd, (int)threads, run->opt.overdraw_out || run->opt.trace_set);
 }
 
@@ -111,9 +116,9 @@ static bool choose(Run *run, Error *err)
     if (run->opt.steps_dir)
         return error_set(err, "--steps does not apply to 10_fast_raster (faces are drawn "
                               "later, tile by tile: there is no picture after each face)");
-    int simd = x[FLAG_SIMD] ? find_name(x[FLAG_SIMD], SIMD_NAMES, 3) : SIMD_NONE;
+    int simd = x[FLAG_SIMD] ? find_name(x[FLAG_SIMD], SIMD_NAMES, 4) : SIMD_NONE;
     if (simd < 0)
-        return error_set(err, "--simd: '%s' is not one of none, sse2, avx2", x[FLAG_SIMD]);
+        return error_set(err, "--simd: '%s' is not one of none, sse2, avx2, pixels", x[FLAG_SIMD]);
     if (simd > (int)simd_best())
         return error_set(err, "--simd %s: this machine (or build) has only %s", x[FLAG_SIMD],
                          SIMD_NAMES[simd_best()]);
