@@ -32,7 +32,7 @@ int64_t snap(double pixels)
 /* ---- The bins ---------------------------------------------------------- */
 
 /* Room for need items in *items of *cap; false (nothing changed) without. */
-static bool grow(void **items, size_t *cap, size_t need, size_t size)
+bool grow_array(void **items, size_t *cap, size_t need, size_t size)
 {
     size_t more = *cap ? *cap : 1024;
     while (more < need)
@@ -53,15 +53,15 @@ bool bins_room(Bins *b, const Poly *p, int n)
     if (room) /* as nearly always: nothing to grow */
         return true;
     void *poly = b->poly, *edge = b->edge, *corner = b->corner;
-    bool ok = grow(&poly, &b->cap_poly, b->npoly + 1, sizeof *b->poly) &&
-              grow(&edge, &b->cap_edge, b->nedge + (size_t)n, sizeof *b->edge) &&
-              grow(&corner, &b->cap_corner, b->ncorner + (size_t)n, sizeof *b->corner);
+    bool ok = grow_array(&poly, &b->cap_poly, b->npoly + 1, sizeof *b->poly) &&
+              grow_array(&edge, &b->cap_edge, b->nedge + (size_t)n, sizeof *b->edge) &&
+              grow_array(&corner, &b->cap_corner, b->ncorner + (size_t)n, sizeof *b->corner);
     b->poly = poly, b->edge = edge, b->corner = corner;
     for (int ty = p->y0 / TILE_SIZE; ok && ty <= (p->y1 - 1) / TILE_SIZE; ty++)
         for (int tx = p->x0 / TILE_SIZE; ok && tx <= (p->x1 - 1) / TILE_SIZE; tx++) {
             Bin *bin = &b->bin[ty * b->tiles_x + tx];
             void *at = bin->at;
-            ok = grow(&at, &bin->cap, bin->n + 1, sizeof *bin->at);
+            ok = grow_array(&at, &bin->cap, bin->n + 1, sizeof *bin->at);
             bin->at = at;
         }
     return ok;

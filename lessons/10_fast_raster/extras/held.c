@@ -27,17 +27,6 @@ struct Held {
 
 typedef struct { Target *t; Held *h; size_t lo, hi; int k; } Run;
 
-static bool room(void **items, size_t *cap, size_t need, size_t size)
-{
-    size_t more = *cap ? *cap : 4096;
-    while (more < need)
-        more *= 2;
-    void *bigger = need <= *cap ? *items : realloc(*items, more * size);
-    if (bigger && need > *cap)
-        *items = bigger, *cap = more;
-    return bigger != NULL;
-}
-
 bool hold_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
 {
     FastRaster *fr = (FastRaster *)t->depth_setup;
@@ -48,10 +37,10 @@ bool hold_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
         fast_finish(t);
     void *face = h->face, *v = h->v, *clip = h->clip, *tri = h->tri;
     size_t n = (size_t)f->n;
-    bool ok = room(&face, &h->cap_face, h->nface + 1, sizeof *h->face) &&
-              room(&v, &h->cap_v, h->nv + n, sizeof *h->v) &&
-              room(&clip, &h->cap_clip, h->nv + n, sizeof *h->clip) &&
-              room(&tri, &h->cap_tri, h->ntri + n - 2, sizeof *h->tri);
+    bool ok = grow_array(&face, &h->cap_face, h->nface + 1, sizeof *h->face) &&
+              grow_array(&v, &h->cap_v, h->nv + n, sizeof *h->v) &&
+              grow_array(&clip, &h->cap_clip, h->nv + n, sizeof *h->clip) &&
+              grow_array(&tri, &h->cap_tri, h->ntri + n - 2, sizeof *h->tri);
     h->face = face, h->v = v, h->clip = clip, h->tri = tri;
     if (!ok) {
         fast_finish(t); /* what was held, first: then this face is set up now */
