@@ -6,6 +6,8 @@
 #                         TEST=name only the tests of that name (* and ? work)
 #   make update-expected LESSON=NN   accept the current pictures of lesson NN's tests
 #   make diff FROM=02 TO=03   what lesson 03 changes in lesson 02's code
+#   make snapshot LESSON=07 [DEST=dir]   lesson 07, with what it inherits and
+#                         common/, in a directory that builds with make alone
 #   make reading          per lesson: the files a reader opens, the solution
 #                         lines, and the size of the diff to the next lesson
 #   make sanitize         make test and make run again, under ASan and UBSan
@@ -14,8 +16,8 @@
 #   make compile_commands.json   what editors read to know how each file compiles
 #   make clean
 #
-# A new lesson is a new directory lessons/NN_name/ with a main.c: nothing here
-# needs to change. Its tests go in tests/NN_name/test_*.c.
+# A new lesson is a new directory lessons/NN_name/ with a main.c, and a
+# README.md naming what it inherits: nothing here needs to change. Its tests go in tests/NN_name/test_*.c.
 
 BUILD    ?= build
 CC       ?= cc
@@ -51,7 +53,17 @@ STB_LIBS      = $(shell pkg-config --libs stb)
 CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka)
 CMOCKA_LIBS   = $(shell pkg-config --libs cmocka)
 
-LESSONS    := $(sort $(notdir $(wildcard lessons/[0-9][0-9]_*)))
+# A lesson is lessons/NN_name/ with its main.c. The files it inherits from
+# earlier lessons are named in its README.md (scripts/lesson-tree.sh): each
+# make links every lesson's files, its own and those, into $(BUILD)/lessons/NN_name/,
+# and compiles the lesson there. A file thus lives in one lesson only.
+LESSONS    := $(sort $(patsubst lessons/%/main.c,%,$(wildcard lessons/[0-9][0-9]_*/main.c)))
+LESSON_TREE:= $(BUILD)/lessons
+ifneq ($(shell sh scripts/lesson-tree.sh assemble $(LESSON_TREE) >&2 && echo ok),ok)
+$(error scripts/lesson-tree.sh could not link the lessons' files into $(LESSON_TREE) (above))
+endif
+# The sources of lesson $(1), as linked: lesson_sources,07_depth_bias
+lesson_sources = $(wildcard $(LESSON_TREE)/$(1)/*.c $(LESSON_TREE)/$(1)/extras/*.c)
 BINS       := $(LESSONS:%=$(BUILD)/bin/%)
 COMMON_OBJ := $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard common/*.c))
 SUPPORT_OBJ:= $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tests/support/*.c))
@@ -67,7 +79,7 @@ TEST_BIN   := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 
 DEPS_OK    := $(BUILD)/.deps-ok
 
-.PHONY: all run test clean update-expected deps tools diff reading
+.PHONY: all run test clean update-expected deps tools diff reading snapshot
 # Keep object files: they are intermediate to make, but rebuilding them all on
 # every change would make each edit-test cycle slow.
 .SECONDARY:
@@ -89,14 +101,23 @@ $(BUILD)/obj/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(@D)
 	$(COMPILE) $(STB_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
 
+
 # The objects of lesson $(1) that its tests may link: all of it but main.c.
-lesson_objs = $(patsubst %.c,$(BUILD)/obj/%.o,$(filter-out %/main.c,$(wildcard lessons/$(1)/*.c lessons/$(1)/extras/*.c)))
+lesson_objs = $(patsubst $(LESSON_TREE)/%.c,$(BUILD)/obj/lessons/%.o,$(filter-out %/main.c,$(call lesson_sources,$(1))))
 
 # All objects of lesson $(1), main.c included. (A call, not a literal patsubst
 # in the rule: make would put the stem in place of the patsubst's own %.)
-lesson_all_objs = $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard lessons/$(1)/*.c lessons/$(1)/extras/*.c))
+lesson_all_objs = $(patsubst $(LESSON_TREE)/%.c,$(BUILD)/obj/lessons/%.o,$(call lesson_sources,$(1)))
 
 .SECONDEXPANSION:
+# A lesson's files are compiled where they are linked together, so that each
+# finds the headers of its lesson (an inherited clip.c, the lesson's clip.h);
+# again when the lesson's list of links changes (its .files).
+lesson_of = $(LESSON_TREE)/$(firstword $(subst /, ,$(1)))/.files
+$(BUILD)/obj/lessons/%.o: $(LESSON_TREE)/%.c $$(call lesson_of,$$*) | $(DEPS_OK)
+	@mkdir -p $(@D)
+	$(COMPILE) $(STB_CFLAGS) $(CMOCKA_CFLAGS) -MMD -MP -c $< -o $@
+
 $(BUILD)/bin/%: $$(call lesson_all_objs,$$*) $(COMMON_OBJ)
 	@mkdir -p $(@D)
 	$(LINK) $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
@@ -113,12 +134,17 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(COMMON_OBJ) $(SUPPORT_OBJ) \
 	@mkdir -p $(@D)
 	$(LINK) $^ -o $@ -Wl,--wrap=_cmocka_run_group_tests $(CMOCKA_LIBS) $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 
+# A file that an earlier build's dependency lists name but that is gone (a
+# copy that became an inherited file): nothing to make; the object that
+# named it is built again, with a new list.
+lessons/%.c lessons/%.h: ;
+
 # A lesson's extras/ include its taught header as "raster.h", as its own files do.
-# ($* is the stem of the compile rule, lessons/NN_name/...)
-$(BUILD)/obj/lessons/%.o: OBJ_INCLUDES += -I$(word 1,$(subst /, ,$*))/$(word 2,$(subst /, ,$*))
+# ($* is the stem of the compile rule, NN_name/...)
+$(BUILD)/obj/lessons/%.o: OBJ_INCLUDES += -I$(LESSON_TREE)/$(word 1,$(subst /, ,$*))
 
 # Tests include their lesson's headers as "raster.h", and its extras' as "bugs.h".
-test_lesson_dir = lessons/$(notdir $(patsubst %/,%,$(dir $(1))))
+test_lesson_dir = $(LESSON_TREE)/$(notdir $(patsubst %/,%,$(dir $(1))))
 $(BUILD)/obj/tests/%.o: OBJ_INCLUDES += -Itests/support -I$(call test_lesson_dir,$*) \
                                         -I$(call test_lesson_dir,$*)/extras
 $(BUILD)/obj/tools/%.o: OBJ_INCLUDES += -Itests/support
@@ -161,6 +187,9 @@ compile_commands.json:
 
 diff:
 	@sh scripts/lesson-diff.sh $(FROM) $(TO)
+
+snapshot:
+	@sh scripts/snapshot.sh --build "$(BUILD)" $(if $(DEST),--dest "$(DEST)") "$(LESSON)"
 
 reading:
 	@sh scripts/reading.sh
@@ -241,8 +270,8 @@ fuzz:
 fuzz-build: $(FUZZ_RUN:%=$(BUILD)/fuzz/fuzz_%)
 
 # ($* is the stem of the object rule: tests/fuzz/fuzz_<name>)
-$(BUILD)/obj/tests/fuzz/fuzz_%.o: OBJ_INCLUDES += -Ilessons/$(patsubst tests/fuzz/fuzz_%,%,$*) \
-                                             -Ilessons/$(patsubst tests/fuzz/fuzz_%,%,$*)/extras
+$(BUILD)/obj/tests/fuzz/fuzz_%.o: OBJ_INCLUDES += -I$(LESSON_TREE)/$(patsubst tests/fuzz/fuzz_%,%,$*) \
+                                             -I$(LESSON_TREE)/$(patsubst tests/fuzz/fuzz_%,%,$*)/extras
 $(BUILD)/fuzz/fuzz_%: $(BUILD)/obj/tests/fuzz/fuzz_%.o $(COMMON_OBJ) $$(call lesson_objs,$$*)
 	@mkdir -p $(@D)
 	$(LINK) -fsanitize=fuzzer $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
@@ -335,7 +364,7 @@ BENCH_TABLE   := 02_zbuffer=ZBUFFER 03_perspective_z=ZBUFFER \
 BENCH_TABLE   := $(filter $(LESSONS:%=%=%),$(BENCH_TABLE))
 BENCH_LESSONS := $(foreach e,$(BENCH_TABLE),$(firstword $(subst =, ,$(e))))
 bench_rasterizer = $(lastword $(subst =, ,$(filter $(1)=%,$(BENCH_TABLE))))
-bench_lesson_objs = $(patsubst %.c,$(BENCH_DIR)/obj/%.o,$(filter-out %/main.c,$(wildcard lessons/$(1)/*.c lessons/$(1)/extras/*.c)))
+bench_lesson_objs = $(patsubst $(LESSON_TREE)/%.c,$(BENCH_DIR)/obj/lessons/%.o,$(filter-out %/main.c,$(call lesson_sources,$(1))))
 BENCH_SUPPORT := $(patsubst %.c,$(BENCH_DIR)/obj/%.o,$(wildcard common/*.c) \
                    tests/bench/workloads.c tests/bench/measure.c)
 BENCH_BINS    := $(BENCH_DIR)/bench_limit $(BENCH_LESSONS:%=$(BENCH_DIR)/bench_%)
@@ -351,22 +380,26 @@ bench: $(BENCH_BINS)
 	@CC="$(CC)" BENCH_CFLAGS="$(BENCH_CFLAGS)" sh tests/bench/run-bench.sh $(BENCH_DIR) $(BENCH_BINS)
 
 # (A lesson's extras/ include its taught header as "raster.h", as in the usual build.)
-$(BENCH_DIR)/obj/lessons/%.o: OBJ_INCLUDES += -I$(word 1,$(subst /, ,$*))/$(word 2,$(subst /, ,$*))
+$(BENCH_DIR)/obj/lessons/%.o: OBJ_INCLUDES += -I$(LESSON_TREE)/$(word 1,$(subst /, ,$*))
+BENCH_COMPILE = $(CC) $(REQUIRED_CPPFLAGS) -Itests/bench $(OBJ_INCLUDES) $(CPPFLAGS) $(CFLAGS) $(BENCH_OPT) \
+                $(call warn_of,$<) $(STB_CFLAGS) -MMD -MP -c $< -o $@
 $(BENCH_DIR)/obj/%.o: %.c | $(DEPS_OK)
 	@mkdir -p $(@D)
-	$(CC) $(REQUIRED_CPPFLAGS) -Itests/bench $(OBJ_INCLUDES) $(CPPFLAGS) $(CFLAGS) $(BENCH_OPT) $(call warn_of,$<) \
-	    $(STB_CFLAGS) -MMD -MP -c $< -o $@
+	$(BENCH_COMPILE)
+$(BENCH_DIR)/obj/lessons/%.o: $(LESSON_TREE)/%.c $$(call lesson_of,$$*) | $(DEPS_OK)
+	@mkdir -p $(@D)
+	$(BENCH_COMPILE)
 
 $(BENCH_DIR)/obj/bench_%.o: tests/bench/bench.c | $(DEPS_OK)
 	@mkdir -p $(@D)
-	$(CC) $(REQUIRED_CPPFLAGS) -Itests/bench -Ilessons/$* $(CPPFLAGS) $(BENCH_CFLAGS) $(BENCH_DEFS) \
+	$(CC) $(REQUIRED_CPPFLAGS) -Itests/bench -I$(LESSON_TREE)/$* $(CPPFLAGS) $(BENCH_CFLAGS) $(BENCH_DEFS) \
 	    -DBENCH_RASTERIZER=$(call bench_rasterizer,$*) -DBENCH_LESSON='"$*"' \
 	    -DBENCH_LESSON_NUMBER=$(patsubst 0%,%,$(firstword $(subst _, ,$*))) -MMD -MP -c $< -o $@
 
 # Lesson 10 is timed in two rows, one thread and all cores, its depth buffer
 # unorm24 as llvmpipe's (tests/bench/bench_setup.h, fast_raster_setup.c).
 $(BENCH_DIR)/obj/bench_10_fast_raster.o: BENCH_DEFS := -DBENCH_SETUP
-$(BENCH_DIR)/obj/tests/bench/fast_raster_setup.o: OBJ_INCLUDES += -Ilessons/10_fast_raster
+$(BENCH_DIR)/obj/tests/bench/fast_raster_setup.o: OBJ_INCLUDES += -I$(LESSON_TREE)/10_fast_raster
 $(BENCH_DIR)/bench_10_fast_raster: $(BENCH_DIR)/obj/tests/bench/fast_raster_setup.o
 
 $(BENCH_DIR)/obj/gpu/%.o: OBJ_INCLUDES += $(GL_CFLAGS)
@@ -375,7 +408,7 @@ $(BENCH_DIR)/bench_llvmpipe: $(BENCH_DIR)/obj/gpu/bench_llvmpipe.o $(BENCH_DIR)/
                              $(BENCH_SUPPORT)
 	$(CC) $(BENCH_LINK) $(LDFLAGS) $^ -o $@ $(GL_LIBS) $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 
-$(BENCH_DIR)/obj/tests/bench/early_z.o: OBJ_INCLUDES += -Ilessons/08_early_z -Ilessons/08_early_z/extras
+$(BENCH_DIR)/obj/tests/bench/early_z.o: OBJ_INCLUDES += -I$(LESSON_TREE)/08_early_z -I$(LESSON_TREE)/08_early_z/extras
 $(BENCH_DIR)/bench_early_z: $(BENCH_DIR)/obj/tests/bench/early_z.o $(call bench_lesson_objs,08_early_z) \
                             $(BENCH_SUPPORT)
 	$(CC) $(BENCH_LINK) $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)

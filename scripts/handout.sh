@@ -32,7 +32,7 @@ usage() {
 }
 die() {
     echo "$prog: error: $1" >&2
-    [ -n "${tmp:-}" ] && rm -rf "$tmp"
+    [ -n "${tmp:-}" ] && rm -rf "$tmp" "$tmp.inherited"
     exit 1
 }
 
@@ -108,7 +108,7 @@ mkdir -p "$parent" || die "cannot create $parent"
 tmp="$dest.tmp.$$"
 rm -rf "$tmp"
 mkdir "$tmp" || die "cannot create $tmp"
-trap 'rm -rf "$tmp"' INT TERM HUP
+trap 'rm -rf "$tmp" "$tmp.inherited"' INT TERM HUP
 
 # copy PATH: PATH (file or directory) into the same place in the handout.
 copy() {
@@ -155,19 +155,39 @@ fi
 
 # --only: out go the other lessons, with everything named after them: their
 # tests, expected images, pages, pictures (docs/images/02_*), fuzz targets.
+# Of a lesson whose files this one inherits, those files stay, solved.
 # A lesson whose program this lesson's tests run (lesson 03's compare their
 # naive rule with lesson 02's pictures) stays, as it is, without its tests.
 needed=""
+kept=""
+if [ "$only" -eq 1 ]; then
+    for d in lessons/*; do
+        [ -d "$d" ] && [ "${d#lessons/}" != "$name" ] || continue
+        if grep -q "\"${d#lessons/}\"" tests/"$name"/* 2>/dev/null; then needed="$needed ${d#lessons/}"; fi
+    done
+fi
+# The files that the lesson, and those it keeps whole, inherit (scripts/lesson-tree.sh).
+inherits=$(for l in "$name" $needed; do sh scripts/lesson-tree.sh list "$l" || exit 1; done) ||
+    die "cannot list the files of lessons/$name"
 if [ "$only" -eq 1 ]; then
     for d in lessons/*; do
         [ -d "$d" ] || continue
         other=${d#lessons/}
         [ "$other" = "$name" ] && continue
-        if grep -q "\"$other\"" tests/"$name"/* 2>/dev/null; then
-            needed="$needed $other"
-        else
-            rm -rf "${tmp:?}/$d"
-        fi
+        case " $needed " in
+            *" $other "*) ;;
+            *) if [ -n "$(echo "$inherits" | awk -v o="$d/" 'index($2, o) == 1')" ]; then
+                   # Of a lesson files are inherited from, those files only.
+                   find "$tmp/$d" -type f | while read -r f; do
+                       echo "$inherits" | awk -v f="${f#"$tmp/"}" '$2 == f { found = 1 } END { exit !found }' ||
+                           rm -f "$f"
+                   done
+                   find "$tmp/$d" -depth -type d -empty -exec rmdir {} \;
+                   kept="$kept $other"
+               else
+                   rm -rf "${tmp:?}/$d"
+               fi ;;
+        esac
         for top in "$tmp/tests" "$tmp/docs"; do
             [ -d "$top" ] || continue
             find "$top" \( -name "*$other*" -o -name "$(echo "$other" | cut -c1-2)_*" \) \
@@ -186,6 +206,14 @@ sources=$lesson_files
 case " $marked " in
     *" docs/$name.md "*) sources="$sources docs/$name.md" ;;
 esac
+# So is all of what it inherits, which the handout holds solved: read as the
+# teacher reads it (without markers), every line of it is outside the regions.
+mkdir "$tmp.inherited" || die "cannot create $tmp.inherited"
+echo "$inherits" | awk -v own="lessons/$name/" 'NF == 2 && index($2, own) != 1 { print $2 }' | sort -u |
+    while read -r f; do
+        awk -v mode=clean -f "$awk_regions" "$f" >"$tmp.inherited/$(echo "$f" | tr / _)" || exit 1
+    done || die "cannot read the files lessons/$name inherits"
+sources="$sources $(find "$tmp.inherited" -type f | sort | tr '\n' ' ')"
 # shellcheck disable=SC2086
 awk -v mode=lines -f "$awk_regions" $sources >"$lines" || die "cannot list the solution lines"
 files="$tmp.files"
@@ -221,7 +249,7 @@ leaks=$(awk -v lines="$lines" -v files="$files" -v root="$tmp" '
             close(root "/" f)
         }
     }')
-[ -z "$leaks" ] || { rm -f "$files" "$lines"; die "a line of a solution region is in the handout:
+[ -z "$leaks" ] || { rm -rf "$files" "$lines" "$tmp.inherited"; die "a line of a solution region is in the handout:
 $leaks
 Widen the region, or change the line outside it; nothing was written."; }
 
@@ -267,7 +295,7 @@ leaks=$(awk -v exprs="$exprs" -v files="$files" -v root="$tmp" '
             }
         }
     }')
-rm -f "$files" "$lines" "$exprs"
+rm -rf "$files" "$lines" "$exprs" "$tmp.inherited"
 [ -z "$leaks" ] || die "a solution expression is in the handout (white space aside):
 $leaks
 Say what to compute and why in words, not the formula; nothing was written."
@@ -282,6 +310,9 @@ count=$(echo "$todos" | grep -c . || true)
 echo "$prog: wrote $dest: lessons/$name with $count solution region(s) taken out$(
     case $earlier in absent) echo ", no other lesson" ;; stubbed) echo ", the other lessons stubbed too" ;; esac)"
 echo "$todos" | sed 's/^/  /'
+if [ -n "$kept" ]; then
+    echo "$prog: kept, solved, the files it inherits from:$kept"
+fi
 if [ -n "$needed" ]; then
     echo "$prog: kept, as they are, the lessons whose programs its tests run:$needed"
 fi

@@ -3,8 +3,8 @@
 # what the later lesson teaches. FROM and TO are lesson numbers (02) or names
 # (02_zbuffer). With --stat, one line per file: "<added> <removed> <file>".
 #
-# Compared: the files at the top of each lesson directory (main.c and the
-# taught files). Not compared: extras/, what a lesson shows but does not hand
+# Compared: the sources at the top of each lesson (main.c and the taught
+# files), those it inherits included, as make builds it. Not compared: extras/, what a lesson shows but does not hand
 # on (bug modes, comparisons), and the REPLACES list. A file that TO's
 # REPLACES names as replacing one of FROM's is shown whole, as added, and the
 # file it replaces is left out: it is a new algorithm, not an edit.
@@ -38,14 +38,17 @@ replaced_file() { # FROM's files that TO replaces
 regions="$PWD/scripts/solution-regions.awk"
 clean=$(mktemp -d)
 trap 'rm -rf "$clean"' EXIT
+# A lesson's files are its own and those it inherits (scripts/lesson-tree.sh),
+# each under the lesson's name, where the build links it.
 for d in "$from" "$to"; do
     mkdir -p "$clean/$d"
-    for f in "$d"/*; do
-        [ -f "$f" ] || continue
-        case ${f##*/} in REPLACES) continue ;; esac
-        if [ "$d" = "$from" ] && replaced_file | grep -qx "${f##*/}"; then continue; fi
-        awk -v mode=clean -f "$regions" "$f" >"$clean/$f"
-    done
+    sh scripts/lesson-tree.sh list "${d#lessons/}" >"$clean/files" || exit 2
+    while read -r rel src; do
+        case $rel in */*) continue ;; esac
+        if [ "$d" = "$from" ] && replaced_file | grep -qx "$rel"; then continue; fi
+        awk -v mode=clean -f "$regions" "$src" >"$clean/$d/$rel"
+    done <"$clean/files"
+    rm -f "$clean/files"
 done
 cd "$clean"
 if [ "$stat" -eq 0 ]; then

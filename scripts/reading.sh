@@ -3,11 +3,12 @@
 #
 # Per lesson:
 #   reading path  main.c, the taught files (every other file at the top of the
-#                 lesson directory, raster.h, raster.c, ..., but those carried
-#                 unchanged from the lesson before), then the headers they
-#                 include directly, of the lesson (extras/extras.h) or of
-#                 common/, each once, in the order first included. Lines are
-#                 counted as the files stand, comments and markers included.
+#                 lesson, raster.h, raster.c, ..., but those the lesson before
+#                 has too, unchanged), then the headers they include directly,
+#                 of the lesson (extras/extras.h, an inherited scanline.h) or
+#                 of common/, each once, in the order first included, each
+#                 named where it lives. Lines are counted as the files stand,
+#                 comments and markers included.
 #   solution      lines inside SOLUTION BEGIN/END regions (make handout's stubs
 #                 replace them), over every file of the lesson.
 #   diff to next  lines of `make diff FROM=<this> TO=<next>`; where the next
@@ -31,29 +32,55 @@ same_as() {
 }
 
 # The reading path of lesson directory $1 (whose predecessor is $2, or
-# nothing), one file per line. A file the lesson carries unchanged from its
-# predecessor is not taught again: it is on the path only if a taught file
-# includes it.
+# nothing), one file per line, each where it lives (an inherited file in the
+# lesson that owns it: scripts/lesson-tree.sh). A file the lesson carries
+# unchanged from its predecessor is not taught again: it is on the path only
+# if a taught file includes it.
 reading_path() {
     dir=$1 prev=$2
-    start="$dir/main.c"
-    for f in "$dir"/*.h "$dir"/*.c; do
-        [ -f "$f" ] && [ "$f" != "$dir/main.c" ] || continue
-        [ -n "$prev" ] && same_as "$f" "$prev/${f##*/}" && continue
-        start="$start $f"
+    sh scripts/lesson-tree.sh list "${dir#lessons/}" >"$tmp/files"
+    : >"$tmp/prev_files"
+    [ -z "$prev" ] || sh scripts/lesson-tree.sh list "${prev#lessons/}" >"$tmp/prev_files"
+    start="main.c"
+    # (the headers first, then the sources, each in name order)
+    for rel in $(awk '$1 !~ /\// && $1 ~ /\.h$/ { print $1 }' "$tmp/files") \
+               $(awk '$1 !~ /\// && $1 ~ /\.c$/ && $1 != "main.c" { print $1 }' "$tmp/files"); do
+        src=$(awk -v f="$rel" '$1 == f { print $2 }' "$tmp/files")
+        prev_src=$(awk -v f="$rel" '$1 == f { print $2 }' "$tmp/prev_files")
+        [ -n "$prev_src" ] && same_as "$src" "$prev_src" && continue
+        start="$start $rel"
     done
     # shellcheck disable=SC2086
-    awk -v dir="$dir" '
+    awk -v files="$tmp/files" -v start="$start" '
         function add(f) { if (!(f in seen)) { seen[f] = 1; order[++n] = f } }
-        BEGIN { for (i = 1; i < ARGC; i++) add(ARGV[i]) }
-        /^#include "/ {
-            name = $2; gsub(/"/, "", name)
-            base = FILENAME; sub(/\/[^\/]*$/, "", base)
-            if ((getline line < (base "/" name)) >= 0) { close(base "/" name); add(base "/" name) }
-            else if ((getline line < (dir "/" name)) >= 0) { close(dir "/" name); add(dir "/" name) }
-            else if ((getline line < ("common/" name)) >= 0) { close("common/" name); add("common/" name) }
+        function norm(p,    k, i, part, out, m) {
+            m = split(p, part, "/"); k = 0
+            for (i = 1; i <= m; i++) {
+                if (part[i] == "." || part[i] == "") continue
+                if (part[i] == ".." && k > 0) { k--; continue }
+                out[++k] = part[i]
+            }
+            p = ""; for (i = 1; i <= k; i++) p = p (i > 1 ? "/" : "") out[i]
+            return p
         }
-        END { for (i = 1; i <= n; i++) print order[i] }' $start | sed 's|/\./|/|g; s|[^/]*/\.\./||g'
+        BEGIN {
+            while ((getline l < files) > 0) { split(l, f, " "); src[f[1]] = f[2] }
+            m = split(start, first, " ")
+            for (i = 1; i <= m; i++) add(src[first[i]])
+            for (i = 1; i <= m; i++) {
+                rel = first[i]; base = rel; if (!sub(/\/[^\/]*$/, "", base)) base = ""
+                while ((getline line < src[rel]) > 0) {
+                    if (line !~ /^#include "/) continue
+                    name = line; sub(/^#include "/, "", name); sub(/".*/, "", name)
+                    near = norm((base == "" ? "" : base "/") name)
+                    if (near in src) add(src[near])
+                    else if (norm(name) in src) add(src[norm(name)])
+                    else if ((getline x < ("common/" name)) >= 0) { close("common/" name); add("common/" name) }
+                }
+                close(src[rel])
+            }
+            for (i = 1; i <= n; i++) print order[i]
+        }'
 }
 
 lines_of() { wc -l <"$1" | tr -d ' '; }

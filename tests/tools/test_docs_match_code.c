@@ -1,7 +1,8 @@
 /* test_docs_match_code.c: every C quote on a lesson page is today's code.
  *
  * A page docs/NN_name.md quotes its lesson in fenced ```c blocks. Each block
- * must appear in the code of that lesson (the .c and .h files of lessons/NN_name/) or in
+ * must appear in the code of that lesson (the .c and .h files of lessons/NN_name/
+ * and those it inherits, as the build links them in build/lessons/NN_name/) or in
  * those of common/: its non-empty lines must be consecutive non-empty lines
  * of one source file. Lines are compared with leading and trailing white
  * space trimmed and every run of white space inside collapsed to one space, so
@@ -234,12 +235,15 @@ static PageResult check_page(const char *page)
     memcpy(name, base, len - 3);
     name[len - 3] = '\0';
 
+    /* The lesson's files as the build links them: its own and those it
+     * inherits (scripts/lesson-tree.sh), in <build>/lessons/NN_name/. */
     Sources srcs = {0};
-    char pattern[512];
-    snprintf(pattern, sizeof pattern, "lessons/%s/*.[ch]", name);
+    char pattern[1024];
+    const char *bin = getenv("BIN_DIR") ? getenv("BIN_DIR") : "build/bin";
+    snprintf(pattern, sizeof pattern, "%s/../lessons/%s/*.[ch]", bin, name);
     add_sources(&srcs, pattern);
     if (srcs.count == 0)
-        fail_msg("%s: no lesson sources lessons/%s/*.c|*.h for this page", page, name);
+        fail_msg("%s: no lesson sources %s for this page", page, pattern);
     add_sources(&srcs, "common/*.[ch]");
 
     char *text = read_whole_file(page);
@@ -281,7 +285,7 @@ static PageResult check_page(const char *page)
             size_t matched = longest_matched_prefix(&srcs, block, n);
             if (matched < n) {
                 r.mismatches++;
-                print_error("%s:%d: ```c block starting \"%s\" is not in lessons/%s/ nor "
+                print_error("%s:%d: ```c block starting \"%s\" is not in lesson %s's files nor "
                             "common/: no source file continues with its line %d \"%s\"\n"
                             "  (quote the code exactly, or mark a sketch with %s)\n",
                             page, md.number[i], first_line, name, block_number[matched],

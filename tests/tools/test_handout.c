@@ -513,6 +513,24 @@ static SolutionLines *solution_lines(const char *lesson)
     snprintf(page, sizeof page, "docs/%s.md", lesson);
     if (file_exists(page))
         collect_regions(s, page);
+    /* The files it inherits come solved in the handout: every line of them
+     * is outside (scripts/lesson-tree.sh lists "<path> <where it lives>"). */
+    char command[PATH_MAX_LEN + 64];
+    snprintf(command, sizeof command, "sh scripts/lesson-tree.sh list %s", lesson);
+    FILE *list = popen(command, "r");
+    assert_non_null(list);
+    char row[2 * PATH_MAX_LEN], rel[PATH_MAX_LEN], where[PATH_MAX_LEN];
+    while (fgets(row, sizeof row, list)) {
+        if (sscanf(row, "%4095s %4095s", rel, where) != 2 || strncmp(where, dir, strlen(dir)) == 0)
+            continue;
+        char *text = read_text(where);
+        for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n"))
+            if (s->n_outside < MAX_LINES * 4)
+                s->outside[s->n_outside++] = strdup(code_of(line));
+        free(text);
+    }
+    if (pclose(list) != 0)
+        fail_msg("`%s` failed", command);
     return s;
 }
 

@@ -151,7 +151,7 @@ static void opt_and_the_other_variables_keep_them(void **state)
 {
     (void)state;
     /* OPT, and the required variables themselves on the command line. */
-    const char *compile[] = {" -c lessons/02_zbuffer/main.c ", NULL};
+    const char *compile[] = {" -c build/lessons/02_zbuffer/main.c ", NULL};
     Command c = command_of("OPT='" UNDOING "' WARN= REQUIRED_CFLAGS= REQUIRED_CPPFLAGS= "
                            "build/obj/lessons/02_zbuffer/main.o",
                            compile);

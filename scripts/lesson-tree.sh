@@ -1,0 +1,137 @@
+#!/bin/sh
+# lesson-tree.sh: the files of a lesson, its own and those it inherits.
+#
+# A file lives in the lesson that introduces it or changes it. A later lesson
+# that uses it unchanged names it in the table "Inherited files" of its
+# README.md, one row per file, as a link to where it lives:
+#
+#   | [scanline.h](../04_scanline_inverse_z/scanline.h) | ... |
+#
+# The link's text is the file's path in the lesson (extras/shader.c), and its
+# target is the same path in the earlier lesson that owns it. Nothing else of
+# the README is read.
+#
+#   lesson-tree.sh list LESSON        one line per file of the lesson, sorted:
+#                                     "<path in the lesson> <where it lives>"
+#   lesson-tree.sh assemble DIR       DIR/<lesson>/ for every lesson: a relative
+#                                     symbolic link per file to where it lives,
+#                                     and the list of them in DIR/<lesson>/.files
+#   lesson-tree.sh copy LESSON DEST   the lesson's files, as plain copies, in DEST
+#   lesson-tree.sh check              every lesson's table is sound (below);
+#                                     prints each fault, exit 1 if any
+#
+# LESSON is a directory name (07_depth_bias) or its number (07). Run from the
+# top of the series. Exit status: 0 done, 1 a fault, 2 a usage error.
+set -eu
+prog=lesson-tree
+
+usage() { echo "$prog: error: $1" >&2; exit 2; }
+
+lesson_dir() { # 07 or 07_depth_bias -> lessons/07_depth_bias
+    for d in lessons/"$1"*; do
+        [ -d "$d" ] && { echo "$d"; return 0; }
+    done
+    usage "no lesson '$1' in lessons/"
+}
+
+# The rows of a lesson's README table: "<path> <owner lesson>".
+inherited() {
+    [ -f "$1/README.md" ] || return 0
+    awk '
+        /^\| *\[[^]]+\]\(\.\.\/[0-9][0-9]_[A-Za-z0-9_]+\/[^)]+\) *\|/ {
+            s = $0; sub(/^\| *\[/, "", s)
+            text = s; sub(/\].*/, "", text)
+            target = s; sub(/^[^]]*\]\(\.\.\//, "", target); sub(/\).*/, "", target)
+            owner = target; sub(/\/.*/, "", owner)
+            path = target; sub(/^[^\/]*\//, "", path)
+            print text, owner, path
+        }' "$1/README.md"
+}
+
+# list lessons/NN: own files (sources, found on disk), then inherited ones.
+list() {
+    dir=$1
+    (cd "$dir" && find . -type f \( -name '*.c' -o -name '*.h' \) | sed 's|^\./||') |
+        while read -r f; do echo "$f $dir/$f"; done
+    inherited "$dir" | while read -r text owner path; do
+        echo "$text lessons/$owner/$path"
+    done
+}
+
+# assemble DIR: a lesson's links are made afresh when the list of its files
+# differs from the one they were made from (DIR/<lesson>/.files), so that a
+# make that changes nothing costs one listing. The build compiles a lesson's
+# files again when its .files changes (a link that now points elsewhere).
+assemble() {
+    out=$1
+    case $out in /*|*..*) usage "assemble wants a directory below the top, not $out" ;; esac
+    for dir in lessons/[0-9][0-9]_*; do
+        [ -d "$dir" ] || continue
+        name=${dir#lessons/}
+        want=$(list "$dir" | sort)
+        if [ -f "$out/$name/.files" ] && [ "$(cat "$out/$name/.files")" = "$want" ]; then continue; fi
+        rm -rf "${out:?}/$name"
+        mkdir -p "$out/$name"
+        # "<path> <target>" -> mkdir and ln -s with a path up to the top.
+        echo "$want" | awk -v lesson="$out/$name" 'NF == 2 {
+            link = lesson "/" $1
+            n = split(link, part, "/"); up = ""
+            for (i = 1; i < n; i++) if (part[i] != "" && part[i] != ".") up = up "../"
+            dir = link; sub(/\/[^\/]*$/, "", dir)
+            printf "mkdir -p \"%s\" && ln -s \"%s%s\" \"%s\" || exit 1\n", dir, up, $2, link
+        }' | sh || { echo "$prog: error: cannot make the links under $out/$name" >&2; exit 1; }
+        echo "$want" >"$out/$name/.files"
+    done
+}
+
+copy() {
+    dir=$1 dest=$2
+    list "$dir" | while read -r rel target; do
+        mkdir -p "$dest/$(dirname "$rel")" && cp "$target" "$dest/$rel" ||
+            { echo "$prog: error: cannot copy $target to $dest/$rel" >&2; exit 1; }
+    done
+}
+
+# check: each row names a file that exists in an earlier lesson, that the
+# lesson does not also hold, and that is the latest version before it (no
+# lesson in between owns one of its own); the link's text is its path there.
+check() {
+    faults=0
+    for dir in lessons/[0-9][0-9]_*; do
+        [ -d "$dir" ] || continue
+        name=${dir#lessons/}
+        rows=$(inherited "$dir")
+        [ -n "$rows" ] || continue
+        out=$(echo "$rows" | while read -r text owner path; do
+            where="$dir/README.md: [$text](../$owner/$path)"
+            if [ "$text" != "$path" ]; then echo "$where: the link's text is not its path there"; continue; fi
+            if [ ! -f "lessons/$owner/$path" ]; then echo "$where: no such file"; continue; fi
+            if [ ! "$owner" \< "$name" ]; then echo "$where: $owner is not an earlier lesson"; continue; fi
+            if [ -f "$dir/$path" ]; then echo "$where: the lesson holds its own $path too"; continue; fi
+            for other in lessons/[0-9][0-9]_*; do
+                o=${other#lessons/}
+                if [ "$owner" \< "$o" ] && [ "$o" \< "$name" ] && [ -f "$other/$path" ]; then
+                    echo "$where: $o has a later version of it"
+                fi
+            done
+            n=$(echo "$rows" | awk -v f="$text" '$1 == f' | wc -l)
+            [ "$n" -eq 1 ] || echo "$where: named $n times"
+        done)
+        if [ -n "$out" ]; then echo "$out"; faults=1; fi
+    done
+    return $faults
+}
+
+[ $# -ge 1 ] || usage "usage: lesson-tree.sh list LESSON | assemble DIR | copy LESSON DEST | check"
+[ -d lessons ] || usage "run it from the top of the series (where lessons/ is)"
+case $1 in
+    list) [ $# -eq 2 ] || usage "usage: lesson-tree.sh list LESSON"
+          list "$(lesson_dir "$2")" | sort ;;
+    assemble) [ $# -eq 2 ] || usage "usage: lesson-tree.sh assemble DIR"
+          assemble "${2%/}" ;;
+    copy) [ $# -eq 3 ] || usage "usage: lesson-tree.sh copy LESSON DEST"
+          copy "$(lesson_dir "$2")" "$3" ;;
+    check) [ $# -eq 1 ] || usage "usage: lesson-tree.sh check"
+          check ;;
+    *) usage "unknown command $1" ;;
+esac
