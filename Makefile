@@ -6,6 +6,7 @@
 #                         TEST=name only the tests of that name (* and ? work)
 #   make update-expected LESSON=NN   accept the current pictures of lesson NN's tests
 #   make diff FROM=02 TO=03   what lesson 03 changes in lesson 02's code
+#   make diffs            docs/diffs/ written anew from the lessons
 #   make snapshot LESSON=07 [DEST=dir]   lesson 07, with what it inherits and
 #                         common/, in a directory that builds with make alone
 #   make reading          per lesson: the files a reader opens, the solution
@@ -79,7 +80,7 @@ TEST_BIN   := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 
 DEPS_OK    := $(BUILD)/.deps-ok
 
-.PHONY: all run test clean update-expected deps tools diff reading snapshot
+.PHONY: all run test clean update-expected deps tools diff diffs reading snapshot
 # Keep object files: they are intermediate to make, but rebuilding them all on
 # every change would make each edit-test cycle slow.
 .SECONDARY:
@@ -173,7 +174,9 @@ tools: $(TOOLS)
 
 # compile_commands.json: every lesson, tool, test and benchmark compiled once,
 # afresh, in a build directory of its own (the usual one is left as it is),
-# under Debian's bear, which records each compiler command. Fuzz targets need
+# under Debian's bear, which records each compiler command; scripts/compdb.sh
+# names each lesson file where it lives (a lesson compiles its files where
+# make links them together, scripts/lesson-tree.sh). Fuzz targets need
 # clang's libFuzzer flags and are left out: an editor takes their neighbours'.
 COMPDB_BUILD := $(BUILD)/compile-commands
 .PHONY: compile_commands.json
@@ -182,11 +185,19 @@ compile_commands.json:
 	@rm -rf $(COMPDB_BUILD)
 	bear --output $@.tmp -- $(MAKE) --no-print-directory BUILD=$(COMPDB_BUILD) \
 	    all $(patsubst $(BUILD)/%,$(COMPDB_BUILD)/%,$(TEST_BIN) $(BENCH_BINS))
-	@mv $@.tmp $@ && rm -rf $(COMPDB_BUILD)
+	@sh scripts/compdb.sh $@.tmp $@ $(COMPDB_BUILD) $(BUILD) && rm -f $@.tmp && rm -rf $(COMPDB_BUILD)
 	@echo "compile_commands.json: $$(grep -c '"file":' $@) files"
 
 diff:
 	@sh scripts/lesson-diff.sh $(FROM) $(TO)
+
+# docs/diffs/NN_to_MM.diff, which the pages link: each written anew from the
+# lessons (tests/tools/test_lesson_diffs.c fails when one is stale).
+diffs:
+	@set -e; for f in docs/diffs/[0-9][0-9]_to_[0-9][0-9].diff; do \
+	    from=$${f#docs/diffs/}; to=$${from#*_to_}; \
+	    sh scripts/lesson-diff.sh $${from%%_*} $${to%.diff} >$$f.tmp && mv $$f.tmp $$f; done
+	@echo "diffs: wrote $$(ls docs/diffs/*.diff | wc -l) files in docs/diffs/"
 
 snapshot:
 	@sh scripts/snapshot.sh --build "$(BUILD)" $(if $(DEST),--dest "$(DEST)") "$(LESSON)"

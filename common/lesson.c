@@ -93,7 +93,7 @@ int run_load(Run *run, const Lesson *lesson, int argc, char **argv)
         render_free(&run->render);
         return error_report(lesson->program, &run->err, EXIT_RUN_FAILED);
     }
-    run->status = EXIT_OK;
+    run->status = RUN_GO; /* until run_report gives the run's status */
     return RUN_GO;
 }
 
@@ -143,6 +143,13 @@ int run_end(Run *run)
 {
     target_free(&run->target);
     render_free(&run->render);
+    /* A run that ends before its report has failed: a lesson's own set-up
+     * (its buffers, say) stopped it, with the error it recorded. */
+    if (run->status == RUN_GO) {
+        run->status = EXIT_RUN_FAILED;
+        if (run->err.msg[0] == '\0')
+            error_set(&run->err, "the run ended before it was drawn and reported");
+    }
     /* Lost output on standard output is a failure too, and then no file is
      * published either: the run is all or nothing. */
     if (run->status != EXIT_RUN_FAILED && !stdout_flush(&run->err))

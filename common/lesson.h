@@ -49,7 +49,7 @@ struct Run {
     char default_out[64];                      /* "out/<program>.png" */
     const char *extra_out[RUN_EXTRA_OUTPUTS], *extra_out_flag[RUN_EXTRA_OUTPUTS]; int n_extra_out;
     Error err;
-    int status;
+    int status; /* RUN_GO until run_report, or a failure, gives the exit status */
 };
 
 int run_load(Run *run, const Lesson *lesson, int argc, char **argv); /* RUN_GO or a status */

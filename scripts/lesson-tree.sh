@@ -60,8 +60,10 @@ list() {
 
 # assemble DIR: a lesson's links are made afresh when the list of its files
 # differs from the one they were made from (DIR/<lesson>/.files), so that a
-# make that changes nothing costs one listing. The build compiles a lesson's
-# files again when its .files changes (a link that now points elsewhere).
+# make that changes nothing costs one listing, or when its links lead
+# elsewhere (the tree was copied to another depth). The build compiles a
+# lesson's files again when its .files changes (a link that now points
+# elsewhere).
 assemble() {
     out=$1
     case $out in /*|*..*) usage "assemble wants a directory below the top, not $out" ;; esac
@@ -69,7 +71,18 @@ assemble() {
         [ -d "$dir" ] || continue
         name=${dir#lessons/}
         want=$(list "$dir" | sort)
-        if [ -f "$out/$name/.files" ] && [ "$(cat "$out/$name/.files")" = "$want" ]; then continue; fi
+        same=0
+        [ -f "$out/$name/.files" ] && [ "$(cat "$out/$name/.files")" = "$want" ] && same=1
+        # A tree copied to another depth has links that lead elsewhere: the
+        # first link is read back to tell.
+        if [ $same -eq 1 ]; then
+            first=$(echo "$want" | awk -v lesson="$out/$name" 'NR == 1 {
+                n = split(lesson "/" $1, part, "/"); up = ""
+                for (i = 1; i < n; i++) if (part[i] != "" && part[i] != ".") up = up "../"
+                print $1 " " up $2 }')
+            [ "$(readlink "$out/$name/${first%% *}")" = "${first#* }" ] && continue
+        fi
+        [ $same -eq 0 ] || cp -p "$out/$name/.files" "$out/.files.$name"
         rm -rf "${out:?}/$name"
         mkdir -p "$out/$name"
         # "<path> <target>" -> mkdir and ln -s with a path up to the top.
@@ -80,7 +93,9 @@ assemble() {
             dir = link; sub(/\/[^\/]*$/, "", dir)
             printf "mkdir -p \"%s\" && ln -s \"%s%s\" \"%s\" || exit 1\n", dir, up, $2, link
         }' | sh || { echo "$prog: error: cannot make the links under $out/$name" >&2; exit 1; }
-        echo "$want" >"$out/$name/.files"
+        # The same list keeps its time: only a new one rebuilds the lesson.
+        if [ $same -eq 1 ]; then mv "$out/.files.$name" "$out/$name/.files"
+        else echo "$want" >"$out/$name/.files"; fi
     done
 }
 

@@ -44,7 +44,6 @@ int main(int argc, char **argv)
     HierarchicalZ h = {.exact = exact_chosen(&run), .count_skipped = true}; /* --hiz-update */
     if (!early_z_begin(&z, &run, &run.err) ||          /* the buffers; draw through z */
         !hiz_begin(&h, &run.target, tile_chosen(&run), &run.err)) { /* the tiles, --tile */
-        run.status = EXIT_RUN_FAILED;
         early_z_free(&z);
         return run_end(&run);
     }

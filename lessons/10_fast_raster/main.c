@@ -30,7 +30,7 @@ int main(int argc, char **argv)
     run.target.depth_setup = &fr.depth;                /* the buffer's format, the engine */
     HierarchicalZ h = {0};
     if (!hiz_begin(&h, &run.target, BLOCK_SIZE, &run.err)) { /* the tiles: one per block */
-        run.status = EXIT_RUN_FAILED;
+        fast_raster_free(&fr);
         return run_end(&run);
     }
     run.rz->clear(&run.target);                        /* clear: the far plane, every tile */

@@ -272,8 +272,8 @@ static void linked_diffs_in_docs_are_the_diffs_of_the_code(void **state)
         if (!read_file(path, DIFF_MAX_BYTES, &kept, &len, &err))
             fail_msg("%s\nwrite it with: make diff FROM=%s TO=%s > %s", err.msg, from, to, path);
         if (strcmp(now, kept) != 0)
-            fail_msg("%s is not the diff of today's lessons %s and %s\nregenerate it with: "
-                     "make diff FROM=%s TO=%s > %s", path, from, to, from, to, path);
+            fail_msg("%s is not the diff of today's lessons %s and %s\nregenerate it (and the "
+                     "others) with: make diffs", path, from, to);
         free(now);
         free(kept);
     }
