@@ -48,20 +48,20 @@ COMPILE = $(CC) $(REQUIRED_CPPFLAGS) $(OBJ_INCLUDES) $(CPPFLAGS) \
           $(OPT) $(CFLAGS) $(MODE_CFLAGS) $(call warn_of,$<)
 LINK    = $(CC) $(OPT) $(CFLAGS) $(MODE_CFLAGS) $(REQUIRED_CFLAGS) $(LDFLAGS)
 
-# Evaluated when a recipe runs, i.e. after scripts/ensure-deps.sh has installed them.
+# Evaluated when a recipe runs, i.e. after tools/ensure-deps.sh has installed them.
 STB_CFLAGS    = $(shell pkg-config --cflags stb)
 STB_LIBS      = $(shell pkg-config --libs stb)
 CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka)
 CMOCKA_LIBS   = $(shell pkg-config --libs cmocka)
 
 # A lesson is lessons/NN_name/ with its main.c. The files it inherits from
-# earlier lessons are named in its README.md (scripts/lesson-tree.sh): each
+# earlier lessons are named in its README.md (tools/lesson-tree.sh): each
 # make links every lesson's files, its own and those, into $(BUILD)/lessons/NN_name/,
 # and compiles the lesson there. A file thus lives in one lesson only.
 LESSONS    := $(sort $(patsubst lessons/%/main.c,%,$(wildcard lessons/[0-9][0-9]_*/main.c)))
 LESSON_TREE:= $(BUILD)/lessons
-ifneq ($(shell sh scripts/lesson-tree.sh assemble $(LESSON_TREE) >&2 && echo ok),ok)
-$(error scripts/lesson-tree.sh could not link the lessons' files into $(LESSON_TREE) (above))
+ifneq ($(shell sh tools/lesson-tree.sh assemble $(LESSON_TREE) >&2 && echo ok),ok)
+$(error tools/lesson-tree.sh could not link the lessons' files into $(LESSON_TREE) (above))
 endif
 # The sources of lesson $(1), as linked: lesson_sources,07_depth_bias
 lesson_sources = $(wildcard $(LESSON_TREE)/$(1)/*.c $(LESSON_TREE)/$(1)/extras/*.c)
@@ -94,8 +94,8 @@ MAKEFLAGS += --no-builtin-rules
 all: $(BINS) $(TOOLS)
 
 deps: $(DEPS_OK)
-$(DEPS_OK): scripts/ensure-deps.sh
-	@sh scripts/ensure-deps.sh
+$(DEPS_OK): tools/ensure-deps.sh
+	@sh tools/ensure-deps.sh
 	@mkdir -p $(@D) && touch $@
 
 $(BUILD)/obj/%.o: %.c | $(DEPS_OK)
@@ -156,66 +156,66 @@ run: $(BINS)
 	    echo "== $$l"; $(BUILD)/bin/$$l; done
 
 # Every test runs from the top of the tree, with BIN_DIR naming the lessons'
-# executables; scripts/run-tests.sh runs the binaries in parallel (TEST_JOBS
+# executables; tools/run-tests.sh runs the binaries in parallel (TEST_JOBS
 # at a time, the number of cores by default), prints their outputs whole and
 # in order, and the final "N passed, M failed".
 # TEST=name becomes TEST_FILTER, which every test binary hands to cmocka's
 # test filter (tests/support/test_hooks.c): only the tests of that name run.
 test: $(BINS) $(TOOLS) $(TEST_BIN)
 	@TEST_FILTER='$(TEST)' BIN_DIR=$(BUILD)/bin TOOL_DIR=$(BUILD)/tools TEST_OUTPUT=$(BUILD)/test-output \
-	    sh scripts/run-tests.sh $(TEST_BIN)
+	    sh tools/run-tests.sh $(TEST_BIN)
 
 update-expected: $(BINS) $(TOOLS) $(TEST_BIN)
 	@test -n "$(LESSON)" || { echo "usage: make update-expected LESSON=NN" >&2; exit 2; }
 	@UPDATE_EXPECTED=1 BIN_DIR=$(BUILD)/bin TOOL_DIR=$(BUILD)/tools TEST_OUTPUT=$(BUILD)/test-output \
-	    sh scripts/run-tests.sh $(TEST_BIN)
+	    sh tools/run-tests.sh $(TEST_BIN)
 
 tools: $(TOOLS)
 
 # compile_commands.json: every lesson, tool, test and benchmark compiled once,
 # afresh, in a build directory of its own (the usual one is left as it is),
-# under Debian's bear, which records each compiler command; scripts/compdb.sh
+# under Debian's bear, which records each compiler command; tools/compdb.sh
 # names each lesson file where it lives (a lesson compiles its files where
-# make links them together, scripts/lesson-tree.sh). Fuzz targets need
+# make links them together, tools/lesson-tree.sh). Fuzz targets need
 # clang's libFuzzer flags and are left out: an editor takes their neighbours'.
 COMPDB_BUILD := $(BUILD)/compile-commands
 .PHONY: compile_commands.json
 compile_commands.json:
-	@sh scripts/ensure-deps.sh bear
+	@sh tools/ensure-deps.sh bear
 	@rm -rf $(COMPDB_BUILD)
 	bear --output $@.tmp -- $(MAKE) --no-print-directory BUILD=$(COMPDB_BUILD) \
 	    all $(patsubst $(BUILD)/%,$(COMPDB_BUILD)/%,$(TEST_BIN) $(BENCH_BINS))
-	@sh scripts/compdb.sh $@.tmp $@ $(COMPDB_BUILD) $(BUILD) && rm -f $@.tmp && rm -rf $(COMPDB_BUILD)
+	@sh tools/compdb.sh $@.tmp $@ $(COMPDB_BUILD) $(BUILD) && rm -f $@.tmp && rm -rf $(COMPDB_BUILD)
 	@echo "compile_commands.json: $$(grep -c '"file":' $@) files"
 
 diff:
-	@sh scripts/lesson-diff.sh $(FROM) $(TO)
+	@sh tools/lesson-diff.sh $(FROM) $(TO)
 
 # docs/diffs/NN_to_MM.diff, which the pages link: each written anew from the
 # lessons (tests/tools/test_lesson_diffs.c fails when one is stale).
 diffs:
 	@set -e; for f in docs/diffs/[0-9][0-9]_to_[0-9][0-9].diff; do \
 	    from=$${f#docs/diffs/}; to=$${from#*_to_}; \
-	    sh scripts/lesson-diff.sh $${from%%_*} $${to%.diff} >$$f.tmp && mv $$f.tmp $$f; done
+	    sh tools/lesson-diff.sh $${from%%_*} $${to%.diff} >$$f.tmp && mv $$f.tmp $$f; done
 	@echo "diffs: wrote $$(ls docs/diffs/*.diff | wc -l) files in docs/diffs/"
 
 snapshot:
-	@sh scripts/snapshot.sh --build "$(BUILD)" $(if $(DEST),--dest "$(DEST)") "$(LESSON)"
+	@sh tools/snapshot.sh --build "$(BUILD)" $(if $(DEST),--dest "$(DEST)") "$(LESSON)"
 
 reading:
-	@sh scripts/reading.sh
+	@sh tools/reading.sh
 
 clean:
 	rm -rf $(BUILD) out
 
 # ---- The GPU reference (docs/tools.md) --------------------------------------
-# gpu/gpu_reference draws the lessons' scenes with Mesa's llvmpipe through EGL
+# tests/gpu/gpu_reference draws the lessons' scenes with Mesa's llvmpipe through EGL
 # and OpenGL; make test compares the lessons with it. It is the one program
 # that needs Mesa: `make` and `make run` do not build it, and
-# scripts/ensure-deps.sh --gpu installs Mesa the first time it is built.
+# tools/ensure-deps.sh --gpu installs Mesa the first time it is built.
 #   make gpu-check   the agreement table of lessons 03, 04 and 05 with it
-# (A handout leaves gpu/ and the tests that use it out: no Mesa for students.)
-GPU_REF      := $(if $(wildcard gpu/gpu_reference.c),$(BUILD)/tools/gpu_reference)
+# (A handout leaves tests/gpu/ and the tests that use it out: no Mesa for students.)
+GPU_REF      := $(if $(wildcard tests/gpu/gpu_reference.c),$(BUILD)/tools/gpu_reference)
 GPU_DEPS_OK  := $(BUILD)/.gpu-deps-ok
 GL_CFLAGS     = $(shell pkg-config --cflags egl opengl)
 GL_LIBS       = $(shell pkg-config --libs egl opengl)
@@ -224,18 +224,18 @@ GL_LIBS       = $(shell pkg-config --libs egl opengl)
 gpu: $(GPU_REF)
 test: $(GPU_REF)
 
-$(GPU_DEPS_OK): scripts/ensure-deps.sh | $(DEPS_OK)
-	@sh scripts/ensure-deps.sh --gpu
+$(GPU_DEPS_OK): tools/ensure-deps.sh | $(DEPS_OK)
+	@sh tools/ensure-deps.sh --gpu
 	@mkdir -p $(@D) && touch $@
 
-$(BUILD)/obj/gpu/%.o: OBJ_INCLUDES += $(GL_CFLAGS)
-$(BUILD)/obj/gpu/gpu_reference.o $(BUILD)/obj/gpu/gl.o: | $(GPU_DEPS_OK)
-$(BUILD)/tools/gpu_reference: $(BUILD)/obj/gpu/gpu_reference.o $(BUILD)/obj/gpu/gl.o $(COMMON_OBJ)
+$(BUILD)/obj/tests/gpu/%.o: OBJ_INCLUDES += $(GL_CFLAGS)
+$(BUILD)/obj/tests/gpu/gpu_reference.o $(BUILD)/obj/tests/gpu/gl.o: | $(GPU_DEPS_OK)
+$(BUILD)/tools/gpu_reference: $(BUILD)/obj/tests/gpu/gpu_reference.o $(BUILD)/obj/tests/gpu/gl.o $(COMMON_OBJ)
 	@mkdir -p $(@D)
 	$(LINK) $^ -o $@ $(GL_LIBS) $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 
 gpu-check: $(GPU_REF) $(BINS)
-	@BIN_DIR=$(BUILD)/bin GPU_REF=$(GPU_REF) sh scripts/gpu-check.sh
+	@BIN_DIR=$(BUILD)/bin GPU_REF=$(GPU_REF) sh tools/gpu-check.sh
 
 # ---- Robustness: sanitizers, fuzzing, valgrind (docs/robustness.md) ---------
 #
@@ -263,7 +263,7 @@ sanitize:
 
 # A target is tests/fuzz/fuzz_<name>.c. When <name> is a lesson's directory it
 # links that lesson's objects but main.c: one binary per lesson, as lessons
-# share function names. scripts/fuzz.sh says where corpora and crashes go.
+# share function names. tools/fuzz.sh says where corpora and crashes go.
 FUZZ_BUILD := build/fuzz
 FUZZ_CC    := clang
 FUZZ_OPT   := -O1 -g
@@ -273,10 +273,10 @@ FUZZ_NAMES := $(patsubst tests/fuzz/fuzz_%.c,%,$(sort $(wildcard tests/fuzz/fuzz
 FUZZ_RUN   := $(if $(FUZZ),$(foreach n,$(FUZZ_NAMES),$(if $(findstring $(FUZZ),$(n)),$(n))),$(FUZZ_NAMES))
 
 fuzz:
-	@sh scripts/check-fuzz-compiler.sh $(FUZZ_CC)
+	@sh tools/check-fuzz-compiler.sh $(FUZZ_CC)
 	@$(MAKE) --no-print-directory BUILD=$(FUZZ_BUILD) CC=$(FUZZ_CC) \
 	    OPT="$(FUZZ_OPT)" MODE_CFLAGS="$(FUZZ_FLAGS)" fuzz-build
-	@$(SANITIZE_ENV) sh scripts/fuzz.sh $(FUZZ_BUILD) $(SECONDS) $(FUZZ_RUN)
+	@$(SANITIZE_ENV) sh tools/fuzz.sh $(FUZZ_BUILD) $(SECONDS) $(FUZZ_RUN)
 
 fuzz-build: $(FUZZ_RUN:%=$(BUILD)/fuzz/fuzz_%)
 
@@ -301,7 +301,7 @@ valgrind: $(BINS)
 #
 #   make handout LESSON=03 [DEST=dir] [ONLY=1] [EARLIER=solved|stubbed|absent]
 #       the student's tree: lesson 03 with each solution region replaced by
-#       its stub and a TODO(student) hint (scripts/handout.sh); ONLY=1 (or
+#       its stub and a TODO(student) hint (tools/handout.sh); ONLY=1 (or
 #       EARLIER=absent) leaves the other lessons out, EARLIER=stubbed takes
 #       their regions out too. DEST defaults to $(BUILD)/handout/<lesson>.
 #   make grade [LESSON=NN] [TEST=name] [TIME_LIMIT=seconds]
@@ -322,15 +322,15 @@ GRADE_TESTS   := $(patsubst tests/%.c,$(BUILD)/tests/%,\
 #   make autograder LESSON=NN   the Gradescope autograder zip of one lesson
 #       ($(BUILD)/autograder/<lesson>.zip: setup.sh, run_autograder, the series)
 autograder:
-	@sh scripts/autograder.sh --build "$(BUILD)" "$(LESSON)"
+	@sh tools/autograder.sh --build "$(BUILD)" "$(LESSON)"
 
 #   make classroom LESSON=NN [DEST=file]   GitHub Classroom's autograding tests,
 #       .github/classroom/autograding.json: one per test with points
 classroom:
-	@sh scripts/classroom.sh $(if $(DEST),--dest "$(DEST)") "$(LESSON)"
+	@sh tools/classroom.sh $(if $(DEST),--dest "$(DEST)") "$(LESSON)"
 
 handout:
-	@sh scripts/handout.sh --build "$(BUILD)" $(if $(filter 1,$(ONLY)),--only) \
+	@sh tools/handout.sh --build "$(BUILD)" $(if $(filter 1,$(ONLY)),--only) \
 	    $(if $(EARLIER),--earlier "$(EARLIER)") \
 	    $(if $(DEST),--dest "$(DEST)") "$(LESSON)"
 
@@ -346,7 +346,7 @@ grade:
 	@rm -f $(GRADE_TESTS) $(GRADE_LESSONS:%=$(BUILD)/bin/%)
 	@$(MAKE) --no-print-directory -k grade-build GRADE_WARNINGS_SHOWN=1 >$(BUILD)/grade/build.log 2>&1 || \
 	    { cat $(BUILD)/grade/build.log; echo "grade: the build failed (above): what did not build scores 0"; }
-	@sh scripts/grade.sh --build "$(BUILD)" $(if $(TIME_LIMIT),--time-limit "$(TIME_LIMIT)") \
+	@sh tools/grade.sh --build "$(BUILD)" $(if $(TIME_LIMIT),--time-limit "$(TIME_LIMIT)") \
 	    $(if $(TEST),--test "$(TEST)") $(GRADE_LESSONS)
 
 grade-build: $(BUILD)/tools/time_limit $(BINS) $(TOOLS) $(GRADE_TESTS)
@@ -383,7 +383,7 @@ BENCH_BINS    := $(BENCH_DIR)/bench_limit $(BENCH_LESSONS:%=$(BENCH_DIR)/bench_%
 # (tests/bench/early_z.c), when lesson 08 is there.
 BENCH_BINS    += $(if $(wildcard lessons/08_early_z/main.c),$(BENCH_DIR)/bench_early_z)
 # Mesa's llvmpipe on the same workloads, one thread and all cores
-# (gpu/bench_llvmpipe.c), wherever the GPU reference is built.
+# (tests/gpu/bench_llvmpipe.c), wherever the GPU reference is built.
 BENCH_BINS    += $(if $(GPU_REF),$(BENCH_DIR)/bench_llvmpipe)
 
 .PHONY: bench
@@ -413,9 +413,9 @@ $(BENCH_DIR)/obj/bench_10_fast_raster.o: BENCH_DEFS := -DBENCH_SETUP
 $(BENCH_DIR)/obj/tests/bench/fast_raster_setup.o: OBJ_INCLUDES += -I$(LESSON_TREE)/10_fast_raster
 $(BENCH_DIR)/bench_10_fast_raster: $(BENCH_DIR)/obj/tests/bench/fast_raster_setup.o
 
-$(BENCH_DIR)/obj/gpu/%.o: OBJ_INCLUDES += $(GL_CFLAGS)
-$(BENCH_DIR)/obj/gpu/bench_llvmpipe.o $(BENCH_DIR)/obj/gpu/gl.o: | $(GPU_DEPS_OK)
-$(BENCH_DIR)/bench_llvmpipe: $(BENCH_DIR)/obj/gpu/bench_llvmpipe.o $(BENCH_DIR)/obj/gpu/gl.o \
+$(BENCH_DIR)/obj/tests/gpu/%.o: OBJ_INCLUDES += $(GL_CFLAGS)
+$(BENCH_DIR)/obj/tests/gpu/bench_llvmpipe.o $(BENCH_DIR)/obj/tests/gpu/gl.o: | $(GPU_DEPS_OK)
+$(BENCH_DIR)/bench_llvmpipe: $(BENCH_DIR)/obj/tests/gpu/bench_llvmpipe.o $(BENCH_DIR)/obj/tests/gpu/gl.o \
                              $(BENCH_SUPPORT)
 	$(CC) $(BENCH_LINK) $(LDFLAGS) $^ -o $@ $(GL_LIBS) $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 

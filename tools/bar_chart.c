@@ -8,7 +8,7 @@
  * series in the series' colour (the legend names them); the y axis starts at
  * 0, with ticks and grid lines. Exit status: 0 written, 1 could not read or
  * write, 2 bad usage or a bad CSV. docs/10_fast_raster.md's steps chart is
- * drawn from docs/data/10_steps.csv (scripts/make-doc-images.sh). */
+ * drawn from docs/data/10_steps.csv (tools/make-doc-images.sh). */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>

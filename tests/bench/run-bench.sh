@@ -82,7 +82,7 @@ NR == 1 {
 # The targets docs/performance.md states: on fill_back_to_front 0.40 of the
 # limit for lesson 04, 0.20 for the others; on small 3 million triangles/s.
 END {
-    # Mesa llvmpipe in the same run (gpu/bench_llvmpipe.c): the speed of each
+    # Mesa llvmpipe in the same run (tests/gpu/bench_llvmpipe.c): the speed of each
     # lesson as a multiple of that of llvmpipe on the same workload (the
     # median time of llvmpipe over that of the lesson), one thread, all cores.
     if (length(gpu1) > 0) {

@@ -10,7 +10,7 @@
  * - UPDATE_EXPECTED: while grading it is ignored altogether, whatever the
  *   code under test sets (test_update_expected()).
  *
- * Grading (scripts/grade.sh, docs/teaching.md "Results a student cannot
+ * Grading (tools/grade.sh, docs/teaching.md "Results a student cannot
  * forge"). The grader does not read what a test prints to decide whether it
  * passed: the process runs the student's code, which can print anything. It
  * gives the test program two files instead, GRADE_NONCE_FILE (a random

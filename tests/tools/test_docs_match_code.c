@@ -236,7 +236,7 @@ static PageResult check_page(const char *page)
     name[len - 3] = '\0';
 
     /* The lesson's files as the build links them: its own and those it
-     * inherits (scripts/lesson-tree.sh), in <build>/lessons/NN_name/. */
+     * inherits (tools/lesson-tree.sh), in <build>/lessons/NN_name/. */
     Sources srcs = {0};
     char pattern[1024];
     const char *bin = getenv("BIN_DIR") ? getenv("BIN_DIR") : "build/bin";

@@ -1,5 +1,5 @@
 /* test_gpu_agreement.c: the lessons against a GPU, Mesa's llvmpipe, drawn by
- * gpu_reference (gpu/gpu_reference.c, docs/tools.md "The GPU reference").
+ * gpu_reference (tests/gpu/gpu_reference.c, docs/tools.md "The GPU reference").
  *
  *   - Fill rule: two faces sharing a horizontal edge through pixel centres,
  *     then a vertical one; a tie goes to the face below (top edge) and to the

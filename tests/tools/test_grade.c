@@ -143,8 +143,10 @@ static int set_up_tree(void **state)
     snprintf(tree, sizeof tree, "%s", abs_test_dir("grade_tree"));
     ShellResult r = shell_ok(tree, "mkdir -p tests tools lessons/09_fake tests/09_fake lessons/08_plain");
     shell_result_free(&r);
-    r = shell_ok(NULL, "cp -R Makefile common scripts %s/ && cp -R tests/support %s/tests/ && "
-                       "cp tools/time_limit.c %s/tools/", tree, tree, tree);
+    /* tools/: the scripts the Makefile calls, and time_limit of its programs */
+    r = shell_ok(NULL, "cp -R Makefile common %s/ && cp tools/*.sh tools/*.awk %s/tools/ && "
+                       "cp -R tools/autograder %s/tools/ && cp -R tests/support %s/tests/ && "
+                       "cp tools/time_limit.c %s/tools/", tree, tree, tree, tree, tree);
     shell_result_free(&r);
     write_text(path_join(tree, "lessons/09_fake/fake.h"), FAKE_H);
     write_text(path_join(tree, "lessons/09_fake/fake.c"), FAKE_C);
@@ -321,7 +323,7 @@ static void malformed_points_file_is_refused_with_its_line(void **state)
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         write_text(points, bad[i][0]);
-        ShellResult r = run_shell(tree, SHELL_TIMEOUT, "sh scripts/grade.sh --build build 09_fake");
+        ShellResult r = run_shell(tree, SHELL_TIMEOUT, "sh tools/grade.sh --build build 09_fake");
         int status = r.status;
         bool said = strstr(r.output, bad[i][1]) && strstr(r.output, "points.txt is malformed");
         char *out = r.output;
@@ -342,7 +344,7 @@ static void handout_replaces_the_region_by_stub_and_hint(void **state)
 {
     (void)state;
     const char *dest = abs_test_dir("grade_handout");
-    ShellResult r = shell_ok(tree, "sh scripts/handout.sh --only --dest %s/h 09", dest);
+    ShellResult r = shell_ok(tree, "sh tools/handout.sh --only --dest %s/h 09", dest);
     assert_non_null(strstr(r.output, "lessons/09_fake/fake.c:6:"));
     shell_result_free(&r);
     const char *h = path_join(dest, "h");
@@ -362,7 +364,7 @@ static void handout_replaces_the_region_by_stub_and_hint(void **state)
     assert_true(file_exists(path_join(h, "tools/time_limit.c")));
     assert_false(file_exists(path_join(h, "lessons/08_plain"))); /* --only */
     /* Again into the same place: an earlier handout is replaced. */
-    r = shell_ok(tree, "sh scripts/handout.sh --only --dest %s/h 09", dest);
+    r = shell_ok(tree, "sh tools/handout.sh --only --dest %s/h 09", dest);
     shell_result_free(&r);
 }
 
@@ -371,7 +373,7 @@ static void handout_replaces_the_region_by_stub_and_hint(void **state)
 static void expect_refused_handout(const char *lesson, int status, const char *message)
 {
     const char *dest = abs_test_dir("grade_refused");
-    ShellResult r = run_shell(tree, SHELL_TIMEOUT, "sh scripts/handout.sh --dest %s/h %s", dest,
+    ShellResult r = run_shell(tree, SHELL_TIMEOUT, "sh tools/handout.sh --dest %s/h %s", dest,
                               lesson);
     if (r.status != status || !strstr(r.output, message))
         fail_msg("handout %s: want status %d and \"%s\", got %d:\n%s", lesson, status, message,
@@ -395,7 +397,7 @@ static void handout_refuses_a_tree_that_gives_a_solution_line_away(void **state)
     /* Words that only talk about it are fine. */
     write_text(notes, "Hint: the sum of a and b, as an int.\n");
     const char *dest = abs_test_dir("grade_prose_ok");
-    ShellResult r = shell_ok(tree, "sh scripts/handout.sh --only --dest %s/h 09", dest);
+    ShellResult r = shell_ok(tree, "sh tools/handout.sh --only --dest %s/h 09", dest);
     shell_result_free(&r);
     remove(notes);
 }
@@ -428,7 +430,7 @@ static void handout_refuses_bad_requests(void **state)
     /* A DEST that holds something else is left alone. */
     const char *dest = abs_test_dir("grade_foreign");
     write_text(path_join(dest, "precious.txt"), "keep me\n");
-    ShellResult r = run_shell(tree, SHELL_TIMEOUT, "sh scripts/handout.sh --dest %s 09", dest);
+    ShellResult r = run_shell(tree, SHELL_TIMEOUT, "sh tools/handout.sh --dest %s 09", dest);
     if (r.status != 2 || !strstr(r.output, "is not an earlier handout"))
         fail_msg("handout into a foreign directory: status %d\n%s", r.status, r.output);
     shell_result_free(&r);

@@ -514,9 +514,9 @@ static SolutionLines *solution_lines(const char *lesson)
     if (file_exists(page))
         collect_regions(s, page);
     /* The files it inherits come solved in the handout: every line of them
-     * is outside (scripts/lesson-tree.sh lists "<path> <where it lives>"). */
+     * is outside (tools/lesson-tree.sh lists "<path> <where it lives>"). */
     char command[PATH_MAX_LEN + 64];
-    snprintf(command, sizeof command, "sh scripts/lesson-tree.sh list %s", lesson);
+    snprintf(command, sizeof command, "sh tools/lesson-tree.sh list %s", lesson);
     FILE *list = popen(command, "r");
     assert_non_null(list);
     char row[2 * PATH_MAX_LEN], rel[PATH_MAX_LEN], where[PATH_MAX_LEN];
@@ -855,7 +855,7 @@ static void handout_round_trip(void **state)
     snprintf(build, sizeof build, "%s/build", h);
 
     /* 1. The handout, alone. */
-    shell_ok(NULL, "sh scripts/handout.sh --only --dest %s %s", h, lesson);
+    shell_ok(NULL, "sh tools/handout.sh --only --dest %s %s", h, lesson);
 
     /* 2. It builds; no solution line in it; its tests fail, with hints. */
     seed_build(h);

@@ -1,7 +1,7 @@
 /* test_lesson_diffs.c: each lesson reads in one sitting, and `make diff`
  * between two lessons shows only the later one's idea.
  *
- * The measures are those of `make reading` (scripts/reading.sh), checked here
+ * The measures are those of `make reading` (tools/reading.sh), checked here
  * against budgets:
  *
  *   reading path   main.c, the taught files at the top of the lesson
@@ -13,7 +13,7 @@
  *                  everything else of 03 -> 04 at most 80 lines, of any later
  *                  pair at most 200.
  *
- * The diff is counted here from the output of scripts/lesson-diff.sh, file by
+ * The diff is counted here from the output of tools/lesson-diff.sh, file by
  * file, and must agree with what `make reading` prints. Each lesson page names
  * its reading path, in order, under "## Reading the code"; the diffs a page
  * links (docs/diffs/) are today's. */
@@ -75,7 +75,7 @@ static char *command_output(const char *command)
  * reading paths from the table (its indented lines). */
 static int read_readings(Reading *out)
 {
-    char *tsv = command_output("sh scripts/reading.sh --tsv"), *save = NULL;
+    char *tsv = command_output("sh tools/reading.sh --tsv"), *save = NULL;
     int n = 0;
     for (char *line = strtok_r(tsv, "\n", &save); line && n < MAX_LESSONS;
          line = strtok_r(NULL, "\n", &save)) {
@@ -90,7 +90,7 @@ static int read_readings(Reading *out)
         n++;
     }
     free(tsv);
-    char *table = command_output("sh scripts/reading.sh");
+    char *table = command_output("sh tools/reading.sh");
     int k = -1;
     save = NULL;
     for (char *line = strtok_r(table, "\n", &save); line; line = strtok_r(NULL, "\n", &save)) {
@@ -160,7 +160,7 @@ static void every_reading_path_fits_in_one_sitting(void **state)
 static void count_diff(const char *from, const char *to, int *other, int *replacing)
 {
     char command[128];
-    snprintf(command, sizeof command, "sh scripts/lesson-diff.sh %s %s", from, to);
+    snprintf(command, sizeof command, "sh tools/lesson-diff.sh %s %s", from, to);
     char *text = command_output(command), *save = NULL;
     char replaced[8][64];
     int n_replaced = 0;
@@ -264,7 +264,7 @@ static void linked_diffs_in_docs_are_the_diffs_of_the_code(void **state)
     for (size_t k = 0; k < sizeof PAIRS / sizeof PAIRS[0]; k++) {
         const char *from = PAIRS[k][0], *to = PAIRS[k][1];
         char command[128], path[64];
-        snprintf(command, sizeof command, "sh scripts/lesson-diff.sh %s %s", from, to);
+        snprintf(command, sizeof command, "sh tools/lesson-diff.sh %s %s", from, to);
         snprintf(path, sizeof path, "docs/diffs/%s_to_%s.diff", from, to);
         char *now = command_output(command), *kept = NULL;
         size_t len;

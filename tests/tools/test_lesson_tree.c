@@ -1,7 +1,7 @@
 /* test_lesson_tree.c: a file lives in one lesson, and later lessons inherit it.
  *
  * A lesson names each file it takes unchanged from an earlier lesson in the
- * table "Inherited files" of its README.md (scripts/lesson-tree.sh); make
+ * table "Inherited files" of its README.md (tools/lesson-tree.sh); make
  * links a lesson's own and inherited files together under build/lessons/ and
  * compiles them there; make snapshot writes them out as a directory that
  * builds alone. Checked here:
@@ -43,7 +43,7 @@ static char *shell_expect(int want, const char *dir, const char *command)
 static void every_inherited_file_names_where_it_lives(void **state)
 {
     (void)state;
-    char *out = shell_expect(0, NULL, "sh scripts/lesson-tree.sh check");
+    char *out = shell_expect(0, NULL, "sh tools/lesson-tree.sh check");
     if (out[0] != '\0')
         fail_msg("lesson-tree.sh check printed:\n%s", out);
     free(out);
@@ -64,7 +64,7 @@ static void a_wrong_inherited_row_is_reported(void **state)
              "printf '%%s\\n' '| file | taught in |' '|---|---|' "
              "'| [x.c](../01_a/x.c) | 01 |' '| [y.c](../01_a/y.c) | 01 |' "
              "'| [w.c](../01_a/x.c) | 01 |' '| [z.c](../01_a/z.c) | 01 |' "
-             ">lessons/03_c/README.md && sh %s/scripts/lesson-tree.sh check",
+             ">lessons/03_c/README.md && sh %s/tools/lesson-tree.sh check",
              here);
     char *out = shell_expect(1, dir, command);
     const char *faults[] = {
@@ -87,7 +87,7 @@ static void no_two_lessons_hold_the_same_file(void **state)
     char *out = shell_expect(0, NULL,
         "for f in lessons/*/*.[ch] lessons/*/extras/*.[ch]; do "
         "  rel=${f#lessons/*/}; "
-        "  sum=$(awk -v mode=clean -f scripts/solution-regions.awk \"$f\" | cksum | tr ' ' _); "
+        "  sum=$(awk -v mode=clean -f tools/solution-regions.awk \"$f\" | cksum | tr ' ' _); "
         "  echo \"$rel $sum $f\"; "
         "done | sort | awk '$1 \" \" $2 == key { print last \" and \" $3 } { key = $1 \" \" $2; last = $3 }'");
     if (out[0] != '\0')
@@ -111,7 +111,7 @@ static void each_lesson_builds_from_its_own_and_inherited_files(void **state)
              "  (cd \"$tree/$l\" && find . -type f -o -type l | grep -v '/\\.files$' | sed 's|^\\./||' | "
              "   while read -r f; do [ -L \"$f\" ] || echo \"$f is no link\"; "
              "     echo \"$f $(realpath --relative-to=\"$top\" \"$f\")\"; done | sort) >'%s/tree'; "
-             "  sh scripts/lesson-tree.sh list \"$l\" | diff '%s/tree' - | sed \"s|^|$l: |\"; "
+             "  sh tools/lesson-tree.sh list \"$l\" | diff '%s/tree' - | sed \"s|^|$l: |\"; "
              "done; [ $n -ge 10 ] || echo \"only $n lessons\"",
              bin, dir, dir);
     char *out = shell_expect(0, NULL, command);
@@ -131,7 +131,7 @@ static void a_snapshot_builds_alone_and_draws_the_lessons_pictures(void **state)
     if (!getcwd(here, sizeof here))
         fail_msg("getcwd failed");
     snprintf(snap, sizeof snap, "%s%s%s/s", dir[0] == '/' ? "" : here, dir[0] == '/' ? "" : "/", dir);
-    snprintf(command, sizeof command, "sh scripts/snapshot.sh --dest %s 10", snap);
+    snprintf(command, sizeof command, "sh tools/snapshot.sh --dest %s 10", snap);
     free(shell_expect(0, NULL, command));
 
     char *links = shell_expect(0, snap, "find . -type l; grep -c . FILES; "

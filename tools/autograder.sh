@@ -1,10 +1,10 @@
 #!/bin/sh
 # autograder.sh: the Gradescope autograder of one lesson, as a zip.
 #
-#   sh scripts/autograder.sh [--build DIR] LESSON   (make autograder LESSON=NN)
+#   sh tools/autograder.sh [--build DIR] LESSON   (make autograder LESSON=NN)
 #
 # Writes DIR/autograder/<lesson>.zip: setup.sh and run_autograder at its top
-# (scripts/autograder/, with the lesson filled in), and the series beside
+# (tools/autograder/, with the lesson filled in), and the series beside
 # them, which Gradescope unpacks into /autograder/source. autograder/taught.txt
 # lists the lesson's files that hold solution regions: those, and only those,
 # run_autograder takes from the submission. The teacher's material and the
@@ -35,14 +35,14 @@ out="$build/autograder"
 stage="$out/$name.stage"
 rm -rf "$stage"
 mkdir -p "$stage/autograder"
-for f in Makefile README.md common scripts tools tests docs lessons; do
+for f in Makefile README.md common tools tests docs lessons; do
     [ -e "$f" ] && cp -R "$f" "$stage/"
 done
-rm -rf "$stage/tests/tools" "$stage/docs/teaching.md" "$stage/teacher"
+rm -rf "$stage/tests/tools" "$stage/tests/gpu" "$stage/docs/teaching.md" "$stage/tools/teacher"
 (cd "lessons/$name" && grep -rlE 'SOLUTION BEGIN' . | sed 's|^\./||' | sort) >"$stage/autograder/taught.txt"
 [ -s "$stage/autograder/taught.txt" ] || { echo "$prog: error: lessons/$name has no solution region" >&2; exit 1; }
-sed "s/@LESSON@/$name/g" scripts/autograder/run_autograder >"$stage/run_autograder"
-cp scripts/autograder/setup.sh "$stage/setup.sh"
+sed "s/@LESSON@/$name/g" tools/autograder/run_autograder >"$stage/run_autograder"
+cp tools/autograder/setup.sh "$stage/setup.sh"
 chmod +x "$stage/run_autograder" "$stage/setup.sh"
 rm -f "$out/$name.zip"
 (cd "$stage" && zip -qr "../$name.zip" .)

@@ -63,7 +63,7 @@ for t in "$@"; do
     [ -f "$log" ] && cat "$log"
     [ -f "$log" ] || : >"$log"
     # After a failure: the function each failed test checks, the diff pictures.
-    if [ "$status" -ne 0 ]; then sh scripts/test-hints.sh "$t" "$log"; fi
+    if [ "$status" -ne 0 ]; then sh tools/test-hints.sh "$t" "$log"; fi
     p=$(sed -n 's/^\[  PASSED  \] \([0-9][0-9]*\) test(s)\.$/\1/p' "$log" | awk '{s+=$1} END {print s+0}')
     f=$(sed -n 's/^\[  FAILED  \] \([0-9][0-9]*\) test(s), listed below:$/\1/p' "$log" | awk '{s+=$1} END {print s+0}')
     passed=$((passed + p))

@@ -3,7 +3,7 @@
 # read, from what bear recorded of a build in COMPDB_BUILD (make
 # compile_commands.json).
 #
-# A lesson is compiled where make links its files together (scripts/lesson-tree.sh):
+# A lesson is compiled where make links its files together (tools/lesson-tree.sh):
 # COMPDB_BUILD/lessons/NN_name/clip.c, a link to lessons/05_clipping/clip.c. The
 # recorded build is removed afterwards, so its paths become BUILD's, whose
 # links every make keeps; and the entry of each file a lesson owns names the

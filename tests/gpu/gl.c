@@ -20,7 +20,7 @@ static const GLenum FORMAT_GL[3] = {GL_DEPTH_COMPONENT16, GL_DEPTH_COMPONENT24,
 static bool egl_fail(const char *what, Error *err)
 {
     return error_set(err, "%s failed (EGL error 0x%x): is Mesa installed? "
-                          "(sh scripts/ensure-deps.sh --gpu)", what, (unsigned)eglGetError());
+                          "(sh tools/ensure-deps.sh --gpu)", what, (unsigned)eglGetError());
 }
 
 /* llvmpipe, whatever GPU the machine has, unless the environment says otherwise. */

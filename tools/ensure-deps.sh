@@ -3,14 +3,14 @@
 # stb (PNG read/write), cmocka (tests) and pkg-config (to find both).
 # Called by the Makefile before the first compile; a no-op when all are present.
 #
-#   sh scripts/ensure-deps.sh [PROGRAM[:PACKAGE]]...
+#   sh tools/ensure-deps.sh [PROGRAM[:PACKAGE]]...
 #
 # Each PROGRAM named is a tool a make target needs on demand (make
 # compile_commands.json asks for bear): it is installed too, with the Debian
 # package PACKAGE (the program's own name if none is given), when it is not
 # on the PATH.
 #
-# --gpu adds what the GPU reference (gpu/gpu_reference.c, make test) needs:
+# --gpu adds what the GPU reference (tests/gpu/gpu_reference.c, make test) needs:
 # the EGL and OpenGL headers and libraries (pkg-config egl and opengl, and
 # GL/glcorearb.h), and Mesa itself, whose EGL and llvmpipe driver it runs on.
 set -eu

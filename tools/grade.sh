@@ -1,7 +1,7 @@
 #!/bin/sh
 # grade.sh: the score of the lessons' tests, as a table and as results.json.
 #
-#   sh scripts/grade.sh --build DIR [--time-limit SECONDS] LESSON_DIR_NAME...
+#   sh tools/grade.sh --build DIR [--time-limit SECONDS] LESSON_DIR_NAME...
 #   (make grade [LESSON=NN] builds the tests, then calls it)
 #
 # Points come from tests/<lesson>/points.txt, one test a line:

@@ -35,14 +35,14 @@ replaced_file() { # FROM's files that TO replaces
 # The lessons are compared as they read without their solution markers
 # (comments for make handout, docs/teaching.md): copies, cleaned, in a
 # temporary directory with the same relative paths.
-regions="$PWD/scripts/solution-regions.awk"
+regions="$PWD/tools/solution-regions.awk"
 clean=$(mktemp -d)
 trap 'rm -rf "$clean"' EXIT
-# A lesson's files are its own and those it inherits (scripts/lesson-tree.sh),
+# A lesson's files are its own and those it inherits (tools/lesson-tree.sh),
 # each under the lesson's name, where the build links it.
 for d in "$from" "$to"; do
     mkdir -p "$clean/$d"
-    sh scripts/lesson-tree.sh list "${d#lessons/}" >"$clean/files" || exit 2
+    sh tools/lesson-tree.sh list "${d#lessons/}" >"$clean/files" || exit 2
     while read -r rel src; do
         case $rel in */*) continue ;; esac
         if [ "$d" = "$from" ] && replaced_file | grep -qx "$rel"; then continue; fi

@@ -20,7 +20,7 @@
 set -eu
 tsv=0
 [ "${1:-}" = "--tsv" ] && tsv=1
-regions=scripts/solution-regions.awk
+regions=tools/solution-regions.awk
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
@@ -33,14 +33,14 @@ same_as() {
 
 # The reading path of lesson directory $1 (whose predecessor is $2, or
 # nothing), one file per line, each where it lives (an inherited file in the
-# lesson that owns it: scripts/lesson-tree.sh). A file the lesson carries
+# lesson that owns it: tools/lesson-tree.sh). A file the lesson carries
 # unchanged from its predecessor is not taught again: it is on the path only
 # if a taught file includes it.
 reading_path() {
     dir=$1 prev=$2
-    sh scripts/lesson-tree.sh list "${dir#lessons/}" >"$tmp/files"
+    sh tools/lesson-tree.sh list "${dir#lessons/}" >"$tmp/files"
     : >"$tmp/prev_files"
-    [ -z "$prev" ] || sh scripts/lesson-tree.sh list "${prev#lessons/}" >"$tmp/prev_files"
+    [ -z "$prev" ] || sh tools/lesson-tree.sh list "${prev#lessons/}" >"$tmp/prev_files"
     start="main.c"
     # (the headers first, then the sources, each in name order)
     for rel in $(awk '$1 !~ /\// && $1 ~ /\.h$/ { print $1 }' "$tmp/files") \
@@ -114,7 +114,7 @@ while [ $# -gt 0 ]; do
         next=${1#lessons/}
         # The diff's lines, apart from the files shown whole because they
         # replace one (with the note that says so at its top).
-        counts=$(sh scripts/lesson-diff.sh "${name%%_*}" "${next%%_*}" | awk '
+        counts=$(sh tools/lesson-diff.sh "${name%%_*}" "${next%%_*}" | awk '
             /^# .* replaces .*: shown whole below$/ {
                 f = $2; sub(/.*\//, "", f); whole[f] = 1; r++; next }
             /^diff / { f = $NF; sub(/.*\//, "", f); in_whole = (f in whole) }

@@ -1,6 +1,6 @@
 #!/bin/sh
 # make gpu-check: how far lessons 03, 04 and 05 agree with the GPU reference
-# (gpu/gpu_reference.c, Mesa's llvmpipe) on every built-in scene, at the
+# (tests/gpu/gpu_reference.c, Mesa's llvmpipe) on every built-in scene, at the
 # default size. One row per lesson and scene:
 #   covered     pixels that the lesson or the GPU (or both) covers
 #   same face   the share of them where both show the same face
@@ -12,7 +12,7 @@
 # Lessons 03 and 04 drop faces with a corner at or behind the near plane,
 # which the GPU clips: their rows for such scenes say so instead.
 #
-#   BIN_DIR=build/bin GPU_REF=build/tools/gpu_reference sh scripts/gpu-check.sh [SCENE...]
+#   BIN_DIR=build/bin GPU_REF=build/tools/gpu_reference sh tools/gpu-check.sh [SCENE...]
 set -eu
 bin=${BIN_DIR:-build/bin}
 gpu=${GPU_REF:-build/tools/gpu_reference}

@@ -1,11 +1,11 @@
 #!/bin/sh
 # classroom.sh: GitHub Classroom's autograding configuration of one lesson.
 #
-#   sh scripts/classroom.sh [--dest FILE] LESSON   (make classroom LESSON=NN)
+#   sh tools/classroom.sh [--dest FILE] LESSON   (make classroom LESSON=NN)
 #
 # Writes .github/classroom/autograding.json (or FILE): one test per line of
 # tests/<lesson>/points.txt with points, each "make grade LESSON=NN TEST=name",
-# which exits 0 exactly when that test passed (scripts/grade.sh).
+# which exits 0 exactly when that test passed (tools/grade.sh).
 set -eu
 dest=.github/classroom/autograding.json
 lesson=""

@@ -1,7 +1,7 @@
 #!/bin/sh
 # Runs libFuzzer targets, one after the other (make fuzz).
 #
-#   scripts/fuzz.sh BUILD_DIR SECONDS NAME...
+#   tools/fuzz.sh BUILD_DIR SECONDS NAME...
 #
 # Target NAME is BUILD_DIR/fuzz/fuzz_NAME. It starts from the committed seeds
 # in tests/fuzz/corpus/NAME/ (read only) plus what earlier runs found in

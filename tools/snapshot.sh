@@ -1,11 +1,11 @@
 #!/bin/sh
 # snapshot.sh: one lesson as a directory that builds on its own.
 #
-#   sh scripts/snapshot.sh [--build DIR] [--dest DIR] LESSON
+#   sh tools/snapshot.sh [--build DIR] [--dest DIR] LESSON
 #   (make snapshot LESSON=07 [DEST=dir] calls it)
 #
 # Writes the lesson's own files and those it inherits from earlier lessons
-# (scripts/lesson-tree.sh), as plain files where the lesson's build finds
+# (tools/lesson-tree.sh), as plain files where the lesson's build finds
 # them (main.c, clip.c, ..., extras/), common/, and a Makefile of a few lines:
 # `make` there builds the lesson's program with the series' flags, and
 # `make run` runs it into out/. It needs what the series needs: a C compiler,
@@ -58,9 +58,9 @@ rm -rf "$tmp"
 mkdir "$tmp" || die "cannot create $tmp"
 trap 'rm -rf "$tmp"' INT TERM HUP
 
-sh scripts/lesson-tree.sh copy "$name" "$tmp" || die "cannot copy the files of lessons/$name"
+sh tools/lesson-tree.sh copy "$name" "$tmp" || die "cannot copy the files of lessons/$name"
 cp -R common "$tmp/common" || die "cannot copy common/"
-sh scripts/lesson-tree.sh list "$name" | awk '{ print $1 "\t" $2 }' >"$tmp/FILES" ||
+sh tools/lesson-tree.sh list "$name" | awk '{ print $1 "\t" $2 }' >"$tmp/FILES" ||
     die "cannot list the files of lessons/$name"
 
 cat >"$tmp/Makefile" <<EOF

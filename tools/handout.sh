@@ -1,15 +1,16 @@
 #!/bin/sh
 # handout.sh: the student's copy of the series, with one lesson to write.
 #
-#   sh scripts/handout.sh [--only] [--dest DIR] [--build DIR] LESSON
+#   sh tools/handout.sh [--only] [--dest DIR] [--build DIR] LESSON
 #   (make handout LESSON=03 [DEST=dir] [ONLY=1] calls it)
 #
-# Writes a tree that builds and tests on its own: common/, scripts/, tools/,
+# Writes a tree that builds and tests on its own: common/, tools/,
 # the Makefile, the README, the lesson pages and the tests, and the lesson
-# with each solution region (scripts/solution-regions.awk says what that is)
+# with each solution region (tools/solution-regions.awk says what that is)
 # replaced by a TODO(student): comment and its stub. The other lessons come
 # as they are, or, with --only, are left out with their tests and pages.
-# Left out always: the teacher's own checks of these tools (tests/tools/); the
+# Left out always: the teacher's own checks of these tools (tests/tools/), the
+# teacher's guide and key (tools/teacher/), the GPU reference (tests/gpu/); the
 # benchmark's limit (tests/bench/limit.c times a copy of the depth test, so
 # make bench does not work in a handout: it times the finished lessons); the
 # diffs that show this lesson's code (docs/diffs/*NN*); and the CI script (it
@@ -73,7 +74,7 @@ for d in lessons/"$lesson"*; do
 done
 [ -n "$name" ] || usage "no lesson LESSON=$lesson in lessons/ (they are: $(ls lessons | tr '\n' ' '))"
 number=$(echo "$name" | cut -c1-2)
-awk_regions=scripts/solution-regions.awk
+awk_regions=tools/solution-regions.awk
 
 # The files of the lesson that hold regions, and its page if it has any.
 marked=""
@@ -115,13 +116,13 @@ copy() {
     mkdir -p "$tmp/$(dirname "$1")" && cp -R "$1" "$tmp/$1" || die "cannot copy $1"
 }
 
-for f in Makefile README.md .gitignore .editorconfig common scripts tools tests docs lessons; do
+for f in Makefile README.md .gitignore .editorconfig common tools tests docs lessons; do
     if [ -e "$f" ]; then copy "$f"; fi
 done
-rm -rf "$tmp/tests/tools" "$tmp/tests/bench/limit.c"
+rm -rf "$tmp/tests/tools" "$tmp/tests/gpu" "$tmp/tests/bench/limit.c"
 # The teacher's material: the guide (it names every answer), the answer key
-# and anything else under teacher/, never in a student's tree.
-rm -rf "$tmp/teacher" "$tmp/docs/teaching.md"
+# and anything else under tools/teacher/, never in a student's tree.
+rm -rf "$tmp/tools/teacher" "$tmp/docs/teaching.md"
 # The diffs between lessons (docs/diffs/02_to_03.diff) show this lesson's code.
 if [ -d "$tmp/docs/diffs" ]; then
     find "$tmp/docs/diffs" -name "*${number}[_.]*" -exec rm -f {} + || die "cannot leave out docs/diffs"
@@ -166,8 +167,8 @@ if [ "$only" -eq 1 ]; then
         if grep -q "\"${d#lessons/}\"" tests/"$name"/* 2>/dev/null; then needed="$needed ${d#lessons/}"; fi
     done
 fi
-# The files that the lesson, and those it keeps whole, inherit (scripts/lesson-tree.sh).
-inherits=$(for l in "$name" $needed; do sh scripts/lesson-tree.sh list "$l" || exit 1; done) ||
+# The files that the lesson, and those it keeps whole, inherit (tools/lesson-tree.sh).
+inherits=$(for l in "$name" $needed; do sh tools/lesson-tree.sh list "$l" || exit 1; done) ||
     die "cannot list the files of lessons/$name"
 if [ "$only" -eq 1 ]; then
     for d in lessons/*; do
