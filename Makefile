@@ -66,7 +66,7 @@ endif
 # The sources of lesson $(1), as linked: lesson_sources,07_depth_bias
 lesson_sources = $(wildcard $(LESSON_TREE)/$(1)/*.c $(LESSON_TREE)/$(1)/extras/*.c)
 BINS       := $(LESSONS:%=$(BUILD)/bin/%)
-COMMON_OBJ := $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard common/*.c))
+COMMON_OBJ := $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard common/*.c common/harness/*.c))
 SUPPORT_OBJ:= $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tests/support/*.c))
 TOOLS      := $(patsubst tools/%.c,$(BUILD)/tools/%,$(wildcard tools/*.c))
 
@@ -376,7 +376,7 @@ BENCH_TABLE   := $(filter $(LESSONS:%=%=%),$(BENCH_TABLE))
 BENCH_LESSONS := $(foreach e,$(BENCH_TABLE),$(firstword $(subst =, ,$(e))))
 bench_rasterizer = $(lastword $(subst =, ,$(filter $(1)=%,$(BENCH_TABLE))))
 bench_lesson_objs = $(patsubst $(LESSON_TREE)/%.c,$(BENCH_DIR)/obj/lessons/%.o,$(filter-out %/main.c,$(call lesson_sources,$(1))))
-BENCH_SUPPORT := $(patsubst %.c,$(BENCH_DIR)/obj/%.o,$(wildcard common/*.c) \
+BENCH_SUPPORT := $(patsubst %.c,$(BENCH_DIR)/obj/%.o,$(wildcard common/*.c common/harness/*.c) \
                    tests/bench/workloads.c tests/bench/measure.c)
 BENCH_BINS    := $(BENCH_DIR)/bench_limit $(BENCH_LESSONS:%=$(BENCH_DIR)/bench_%)
 # Lesson 08's z-modes and sorts on its crowd scene, shader included

@@ -15,8 +15,8 @@
 #include <string.h>
 
 #include "error.h"
-#include "font.h"
-#include "image.h"
+#include "harness/font.h"
+#include "harness/image_io.h"
 
 #define PROGRAM "bar_chart"
 #define MAX_SERIES 8

@@ -29,8 +29,8 @@
 #include <string.h>
 
 #include "error.h"
-#include "font.h"
-#include "image.h"
+#include "harness/font.h"
+#include "harness/image_io.h"
 
 #define PROGRAM "diagrams"
 
@@ -427,7 +427,7 @@ static void draw_edge_functions(Image *im)
 #define E03_PLOT_TOP 100
 #define E03_PLOT_BOTTOM 440
 
-/* grazing's camera (common/scene.c) at 800 x 600, and its strip A stood on its
+/* grazing's camera (common/harness/scene.c) at 800 x 600, and its strip A stood on its
  * side: the wall x = -0.5 from d = 1.5 to 100. Along row 300 it lands at
  * x_s = 400 - k * 0.5 / d, k = 300 / tan(fovy / 2): the page's
  * "row 300 + 362.1 / d", turned from a column into a row. */

@@ -13,9 +13,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli.h"
+#include "harness/cli.h"
 #include "error.h"
-#include "image.h"
+#include "harness/image_io.h"
 
 #define PROGRAM "magnify"
 #define SCALE_MAX 64

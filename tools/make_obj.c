@@ -12,8 +12,8 @@
 #include <string.h>
 
 #include "error.h"
-#include "mesh.h"
-#include "scene.h"
+#include "harness/mesh_build.h"
+#include "harness/scene.h"
 
 #define PROGRAM "make_obj"
 #define KNOT_TUBE_RADIUS 0.35 /* as the knot scene's */

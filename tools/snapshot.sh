@@ -71,9 +71,9 @@ cat >"$tmp/Makefile" <<EOF
 CC     ?= cc
 CFLAGS ?= -O2 -g
 WARN   := -std=c11 -Wall -Wextra -Werror -pedantic -Wshadow -Wconversion -Wmissing-prototypes
-SRC    := \$(wildcard *.c extras/*.c common/*.c)
+SRC    := \$(wildcard *.c extras/*.c common/*.c common/harness/*.c)
 
-$name: \$(SRC) \$(wildcard *.h extras/*.h common/*.h)
+$name: \$(SRC) \$(wildcard *.h extras/*.h common/*.h common/harness/*.h)
 	\$(CC) -D_POSIX_C_SOURCE=200809L -I. -Icommon \$(shell pkg-config --cflags stb) \\
 	    \$(CFLAGS) \$(WARN) -ffp-contract=off \$(SRC) -o \$@ \$(shell pkg-config --libs stb) -lm -pthread
 

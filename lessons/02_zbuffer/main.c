@@ -6,7 +6,7 @@
  * the tools that watch the depth test) is common/, reached through lesson.h;
  * what the lesson shows but does not teach (--painter, --bug) is in extras/. */
 #include "extras/extras.h"
-#include "lesson.h"
+#include "harness/lesson.h"
 #include "raster.h"
 
 static const Lesson LESSON = {

@@ -7,7 +7,7 @@
  * what the lesson shows but does not teach (--depth-interp naive,
  * --compare-naive, --bug) is in extras/. */
 #include "extras/extras.h"
-#include "lesson.h"
+#include "harness/lesson.h"
 #include "raster.h"
 
 static const Lesson LESSON = {

@@ -7,7 +7,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "lesson.h"
+#include "harness/lesson.h"
 #include "scanline.h"
 
 /* What a player's step forward would run into: the buffer at the centre pixel. */

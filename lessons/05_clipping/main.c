@@ -10,7 +10,7 @@
 
 #include "clip.h"
 #include "extras/extras.h"
-#include "lesson.h"
+#include "harness/lesson.h"
 #include "scanline.h"
 
 /* What a player's step forward would run into: the buffer at the centre pixel. */

@@ -10,7 +10,7 @@
 
 #include "depth_format.h"
 #include "extras/extras.h"
-#include "lesson.h"
+#include "harness/lesson.h"
 
 /* How far apart two surfaces must be to be told apart, at a few distances. */
 static void print_depth_steps(const Target *t)

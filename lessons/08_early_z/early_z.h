@@ -12,7 +12,7 @@
 #define EARLY_Z_H
 
 #include "depth_format.h"
-#include "lesson.h"
+#include "harness/lesson.h"
 
 typedef enum { Z_LATE, Z_EARLY, Z_PREPASS } ZMode;
 typedef enum { SORT_NONE, SORT_FRONT_TO_BACK, SORT_BACK_TO_FRONT } SortOrder;

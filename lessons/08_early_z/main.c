@@ -8,7 +8,7 @@
 
 #include "early_z.h"
 #include "extras/extras.h"
-#include "lesson.h"
+#include "harness/lesson.h"
 
 /* How much shading the picture cost. */
 static void print_shading(const Target *t)

@@ -8,7 +8,7 @@
 
 #include "extras/extras.h"
 #include "hierarchical_z.h"
-#include "lesson.h"
+#include "harness/lesson.h"
 
 /* How much shading the picture cost, and what the tiles saved. */
 static void print_shading(const Target *t)

@@ -7,7 +7,7 @@
  * in extras/. */
 #include "extras/extras.h" /* and lesson 09's hierarchical_z.h */
 #include "fast_raster.h"
-#include "lesson.h"
+#include "harness/lesson.h"
 
 static const Lesson LESSON = {
     .program = "10_fast_raster",

@@ -12,10 +12,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "file.h"
-#include "image.h"
-#include "scene.h"
-#include "shade.h"
+#include "harness/file.h"
+#include "harness/image_io.h"
+#include "harness/scene.h"
+#include "harness/shade.h"
 #include "test_support.h"
 
 #define PROGRAM "02_zbuffer"

@@ -1,5 +1,5 @@
 /* test_world_out.c: --world-out draws the camera, its frustum and the scene
- * from the side and from above (common/world_view.h) for triangles3, the
+ * from the side and from above (common/harness/world_view.h) for triangles3, the
  * lesson's default scene. The picture is compared with
  * tests/expected/02_zbuffer/world_default.png; the framing itself is checked
  * by hand in tests/common/test_world_view.c. */
@@ -13,8 +13,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "file.h"
-#include "image.h"
+#include "harness/file.h"
+#include "harness/image_io.h"
 #include "test_support.h"
 
 #define PROGRAM "02_zbuffer"

@@ -14,7 +14,7 @@
 #include "bugs.h"
 #include "painter.h"
 #include "raster.h"
-#include "render.h"
+#include "harness/render.h"
 #include "test_support.h"
 
 enum { RED = 0, GREEN = 1, BLUE = 2 }; /* the faces of triangles3, in scene order */

@@ -13,9 +13,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "file.h"
-#include "image.h"
-#include "scene.h"
+#include "harness/file.h"
+#include "harness/image_io.h"
+#include "harness/scene.h"
 #include "test_support.h"
 
 #define PROGRAM "03_perspective_z"

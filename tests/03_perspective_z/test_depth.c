@@ -16,7 +16,7 @@
 #include "bugs.h"
 #include "raster.h"
 #include "naive.h"
-#include "render.h"
+#include "harness/render.h"
 #include "test_support.h"
 
 static Target new_target(int width, int height, const Rasterizer *rz)

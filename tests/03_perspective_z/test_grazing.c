@@ -4,7 +4,7 @@
  * build/bin/03_perspective_z is run with each rule, with --compare-naive,
  * with --bug negated-w and with --depth-out, and its pictures are read back.
  *
- * The scene (common/scene.c): the camera is at the origin looking down -Z,
+ * The scene (common/harness/scene.c): the camera is at the origin looking down -Z,
  * so a point's view depth is d = -z, with fovy 45 at 800 x 600. With
  * f = 1 / tan(22.5 deg) = 1 + sqrt(2) the viewport puts a point at
  *     x_s = 400 + 300 f x / d,   y_s = 300 - 300 f y / d
@@ -54,8 +54,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "image.h"
-#include "shade.h"
+#include "harness/image_io.h"
+#include "harness/shade.h"
 #include "test_support.h"
 
 #define PROGRAM "03_perspective_z"

@@ -1,5 +1,5 @@
 /* test_world_out.c: --world-out draws the camera, its frustum and the scene
- * from the side and from above (common/world_view.h) for grazing, the lesson's
+ * from the side and from above (common/harness/world_view.h) for grazing, the lesson's
  * default scene: two strips at a grazing angle, stretched vertically to read.
  * The picture is compared with tests/expected/03_perspective_z/world_grazing.png;
  * the framing itself is checked by hand in tests/common/test_world_view.c. */
@@ -13,7 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "image.h"
+#include "harness/image_io.h"
 #include "test_support.h"
 
 #define PROGRAM "03_perspective_z"

@@ -26,9 +26,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mesh.h"
-#include "scene.h"
-#include "shade.h"
+#include "harness/mesh_build.h"
+#include "harness/scene.h"
+#include "harness/shade.h"
 #include "test_support.h"
 
 #define LESSON "04_scanline_inverse_z"

@@ -13,7 +13,7 @@
 #include "../shared/coverage_suite.inc"
 
 #include "camera.h"
-#include "mesh.h"
+#include "harness/mesh_build.h"
 
 static uint64_t lcg_state = 2024;
 static double random_unit(void)

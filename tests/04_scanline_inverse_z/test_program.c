@@ -13,8 +13,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "image.h"
-#include "scene.h"
+#include "harness/image_io.h"
+#include "harness/scene.h"
 #include "test_support.h"
 
 #define PROGRAM "04_scanline_inverse_z"

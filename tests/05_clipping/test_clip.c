@@ -21,7 +21,7 @@
 #include <stdlib.h>
 
 #include "clip.h"
-#include "render.h"
+#include "harness/render.h"
 #include "test_support.h"
 
 #define EPS 1e-12

@@ -14,7 +14,7 @@
 #include "../shared/coverage_suite.inc"
 
 #include "camera.h"
-#include "mesh.h"
+#include "harness/mesh_build.h"
 #include "scanline.h"
 
 static uint64_t lcg_state = 2025;

@@ -13,7 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "image.h"
+#include "harness/image_io.h"
 #include "test_support.h"
 
 #define PROGRAM "05_clipping"

@@ -1,5 +1,5 @@
 /* test_world_out.c: --world-out draws the camera, its frustum and the scene
- * from the side and from above (common/world_view.h) for inside, the lesson's
+ * from the side and from above (common/harness/world_view.h) for inside, the lesson's
  * default scene: a room whose floor, walls and objects reach behind the camera
  * and through the near plane. The picture is compared with
  * tests/expected/05_clipping/world_inside.png; the framing itself is checked
@@ -14,7 +14,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "image.h"
+#include "harness/image_io.h"
 #include "test_support.h"
 
 #define PROGRAM "05_clipping"

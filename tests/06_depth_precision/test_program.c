@@ -15,9 +15,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "image.h"
-#include "ladder.h"
-#include "scene.h"
+#include "harness/image_io.h"
+#include "harness/ladder.h"
+#include "harness/scene.h"
 #include "test_support.h"
 
 #define PROGRAM "06_depth_precision"

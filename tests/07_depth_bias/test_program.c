@@ -17,8 +17,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "image.h"
-#include "scene.h"
+#include "harness/image_io.h"
+#include "harness/scene.h"
 #include "expect.h"
 #include "test_support.h"
 

@@ -18,8 +18,8 @@
 
 #include "expect.h"
 #include "hierarchical_z.h"
-#include "render.h"
-#include "scene.h"
+#include "harness/render.h"
+#include "harness/scene.h"
 
 #define W 160
 #define H 120

@@ -15,7 +15,7 @@
 #include <string.h>
 
 #include "expect.h"
-#include "image.h"
+#include "harness/image_io.h"
 #include "test_support.h"
 
 #define PROGRAM "09_hierarchical_z"

@@ -17,7 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "image.h"
+#include "harness/image_io.h"
 #include "test_support.h"
 
 #define PROGRAM "10_fast_raster"

@@ -5,8 +5,8 @@
 #include <string.h>
 
 #include "camera.h"
-#include "mesh.h"
-#include "scene.h"
+#include "harness/mesh_build.h"
+#include "harness/scene.h"
 
 #define SCREEN_SIDE 1024
 #define SEED_SMALL 0x5eed0001u

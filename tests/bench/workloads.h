@@ -30,7 +30,7 @@
 #include <stdint.h>
 
 #include "error.h"
-#include "render.h"
+#include "harness/render.h"
 #include "target.h"
 
 #define WORKLOAD_D_MIN 1.0

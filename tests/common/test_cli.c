@@ -18,7 +18,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "cli.h"
+#include "harness/cli.h"
 
 static const LessonFlag EXTRA_FLAGS[] = {
     {.flag = "--painter", .metavar = NULL, .help = "draw back to front, no depth buffer"},

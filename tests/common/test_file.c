@@ -1,4 +1,4 @@
-/* test_file.c: a file is written whole or not at all (common/file.c).
+/* test_file.c: a file is written whole or not at all (common/harness/file.c).
  *
  * The tests run as any user, root included, so none relies on file
  * permissions to make a write fail: they use a missing directory, /dev/full,
@@ -20,8 +20,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "file.h"
-#include "image.h"
+#include "harness/file.h"
+#include "harness/image_io.h"
 #include "test_support.h"
 
 /* ---- helpers ---- */

@@ -7,7 +7,7 @@
 
 #include <cmocka.h>
 
-#include "font.h"
+#include "harness/font.h"
 #include "test_support.h"
 
 static const Rgb BLACK = {0, 0, 0};

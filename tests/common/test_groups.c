@@ -1,4 +1,4 @@
-/* test_groups.c: OBJ objects and groups, per face (common/mesh.c, common/obj.c).
+/* test_groups.c: OBJ objects and groups, per face (common/harness/mesh_build.c, common/harness/obj.c).
  *
  * Later lessons pick faces by name (`decal` for --polygon-offset, `cutout`
  * for alpha-tested faces): a face is in the object of the last `o` line before
@@ -16,7 +16,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "mesh.h"
+#include "harness/mesh_build.h"
 #include "test_support.h"
 
 #define TRIANGLE "v 0 0 0\nv 1 0 0\nv 0 1 0\n"

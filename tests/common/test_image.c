@@ -1,4 +1,4 @@
-/* test_image.c: pictures in and out (common/image.c).
+/* test_image.c: pictures in and out (common/image.c, common/harness/image_io.c).
  *
  * Every expected byte below is worked out by hand from the format's definition,
  * and raw files are read back with plain stdio, not with the code under test. */
@@ -17,7 +17,7 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
-#include "image.h"
+#include "harness/image_io.h"
 #include "test_support.h"
 
 /* The whole file, read with stdio: what a viewer would see on disk. */

@@ -1,4 +1,4 @@
-/* test_mesh.c: meshes, OBJ and MTL files (common/mesh.c, common/obj.c).
+/* test_mesh.c: meshes, OBJ and MTL files (common/harness/mesh_build.c, common/harness/obj.c).
  * Ear clipping has its own test_triangulate.c.
  *
  * Every error test asserts the whole message, file:line included: that line is
@@ -15,8 +15,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "file.h"
-#include "mesh.h"
+#include "harness/file.h"
+#include "harness/mesh_build.h"
 #include "test_support.h"
 
 /* ---- helpers ---- */

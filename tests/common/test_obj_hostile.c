@@ -18,7 +18,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include "mesh.h"
+#include "harness/mesh_build.h"
 #include "test_support.h"
 
 #define TRIANGLE "v 0 0 0\nv 1 0 0\nv 0 1 0\n"

@@ -15,8 +15,8 @@
 #include <string.h>
 
 #include "guard_band.h"
-#include "render.h"
-#include "shade.h"
+#include "harness/render.h"
+#include "harness/shade.h"
 #include "test_support.h"
 
 /* ---- guard_band ------------------------------------------------------------- */

@@ -1,4 +1,4 @@
-/* test_scene.c: the built-in scenes (common/scene.c).
+/* test_scene.c: the built-in scenes (common/harness/scene.c).
  *
  * Every scene must build, be seen by its own camera at 4:3 and 16:9, and lie
  * wholly between the near and far planes: lessons 02 to 04 drop a triangle
@@ -18,8 +18,8 @@
 #include <string.h>
 
 #include "camera.h"
-#include "mesh.h"
-#include "scene.h"
+#include "harness/mesh_build.h"
+#include "harness/scene.h"
 #include "test_support.h"
 
 static void build(const char *name, Mesh *m)

@@ -18,8 +18,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "image.h"
-#include "shade.h"
+#include "harness/image_io.h"
+#include "harness/shade.h"
 #include "target.h"
 #include "test_support.h"
 

@@ -1,4 +1,4 @@
-/* test_triangulate.c: Newell's normal and ear clipping (common/triangulate.c).
+/* test_triangulate.c: Newell's normal and ear clipping (common/harness/triangulate.c).
  *
  * Each polygon's area and shape is worked out by hand in its comment; the
  * triangles must cover exactly that area, wind the way the polygon does, and
@@ -13,7 +13,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "mesh.h"
+#include "harness/mesh_build.h"
 
 /* Twice the signed area of a 2-D triangle in the xy plane. */
 static double area2(Vec3 a, Vec3 b, Vec3 c)

@@ -1,4 +1,4 @@
-/* test_world_view.c: --world-out's picture (common/world_view.h) puts the eye,
+/* test_world_view.c: --world-out's picture (common/harness/world_view.h) puts the eye,
  * the near plane and the faces where the framing says, worked out here by hand.
  *
  * The setup: eye (0, 0, 10) looking at the origin, up +Y, fovy 90, near 1,
@@ -23,10 +23,10 @@
 #include <math.h>
 
 #include "camera.h"
-#include "mesh.h"
-#include "shade.h"
+#include "harness/mesh_build.h"
+#include "harness/shade.h"
 #include "test_support.h"
-#include "world_view.h"
+#include "harness/world_view.h"
 
 static void one_triangle(Mesh *m, Camera *c)
 {

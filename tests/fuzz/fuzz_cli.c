@@ -1,4 +1,4 @@
-/* fuzz_cli.c: the shared command line (common/cli.c) against any arguments
+/* fuzz_cli.c: the shared command line (common/harness/cli.c) against any arguments
  * (make fuzz FUZZ=cli).
  *
  * The first byte picks one of three made-up lessons (every 3-D flag and two
@@ -16,8 +16,8 @@
 #include <string.h>
 
 #include "camera.h"
-#include "cli.h"
-#include "image.h"
+#include "harness/cli.h"
+#include "harness/image_io.h"
 
 #define MAX_ARGS 64
 

@@ -1,4 +1,4 @@
-/* fuzz_obj.c: the OBJ and MTL reader (common/obj.c, mesh.c, triangulate.c)
+/* fuzz_obj.c: the OBJ and MTL reader (common/harness/obj.c, mesh.c, triangulate.c)
  * against any bytes (make fuzz FUZZ=obj).
  *
  * The input is an OBJ file; if it holds a line "#mtl", what follows that
@@ -21,7 +21,7 @@
 #include <math.h>
 #include <unistd.h>
 
-#include "mesh.h"
+#include "harness/mesh_build.h"
 
 static const char OBJ_NAME[] = "f.obj";
 static const char MTL_MARK[] = "\n#mtl\n";

@@ -1,4 +1,4 @@
-/* fuzz_png.c: the reader of --compare references (common/image.c
+/* fuzz_png.c: the reader of --compare references (common/harness/image_io.c
  * image_decode_png) against any bytes (make fuzz FUZZ=png).
  *
  * Whatever the bytes, the reader either refuses them with one line that names
@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "image.h"
+#include "harness/image_io.h"
 
 static void check(bool ok, const char *what)
 {

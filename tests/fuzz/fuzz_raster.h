@@ -35,7 +35,7 @@
 #include <string.h>
 
 #include "guard_band.h"
-#include "render.h"
+#include "harness/render.h"
 #include "target.h"
 
 #define FUZZ_MAX_FACES 6

@@ -9,7 +9,7 @@
  *                 [--orientation HOW] [--snap] [--agree-id F.png [--agree-depth F.pfm]]
  *                 [--polygon-offset FACTOR,UNITS [--offset-clamp C]]
  *
- * The geometry is the lessons' own: common/render.c loads the scene and puts
+ * The geometry is the lessons' own: common/harness/render.c loads the scene and puts
  * every corner in clip space in double, P V (x, y, z, 1) with gluPerspective's
  * P, as lesson 05 clips it; the GPU gets those four numbers as floats (the
  * vertex shader passes them on unchanged), and each triangle of a face carries
@@ -49,13 +49,13 @@
 #include <string.h>
 #include <time.h>
 
-#include "cli.h"
+#include "harness/cli.h"
 #include "error.h"
-#include "file.h"
+#include "harness/file.h"
 #include "gl.h"
-#include "image.h"
-#include "render.h"
-#include "shade.h"
+#include "harness/image_io.h"
+#include "harness/render.h"
+#include "harness/shade.h"
 
 #define PROGRAM "gpu_reference"
 #define ID_MAX ((1 << 24) - 1) /* faces --id-out can number: face + 1 in 24 bits */

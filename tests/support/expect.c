@@ -10,7 +10,7 @@
 
 #include <stdio.h>
 
-#include "shade.h"
+#include "harness/shade.h"
 
 #define MESSAGE_MAX 1024
 

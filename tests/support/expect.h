@@ -21,7 +21,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
-#include "image.h"
+#include "harness/image_io.h"
 #include "target.h"
 
 /* The face a pixel of an id picture (--id-out) shows, NO_FACE for

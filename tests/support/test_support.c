@@ -8,7 +8,7 @@
 
 #include "test_support.h"
 
-#include "world_view.h"
+#include "harness/world_view.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -23,7 +23,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "file.h"
+#include "harness/file.h"
 
 #define PATH_BUF 4096
 #define TEXT_FILE_MAX (1 << 22) /* read_text: 4 MiB */

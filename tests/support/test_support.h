@@ -27,7 +27,7 @@
 #include <stdbool.h>
 
 #include "expect.h"
-#include "image.h"
+#include "harness/image_io.h"
 
 void expect_image_tolerant(const Image *actual, const char *group, const char *name,
                            long max_differing_pixels, int channel_tolerance,

@@ -25,7 +25,7 @@
 #include <sys/resource.h>
 #include <sys/stat.h>
 
-#include "scene.h"
+#include "harness/scene.h"
 #include "test_support.h"
 
 #define ALL_3D "3-D"

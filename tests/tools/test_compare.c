@@ -3,7 +3,7 @@
  * is not, with the number of differing pixels, the largest channel difference,
  * their bounding box, and a diff picture next to --out; exit 1 with a clear
  * message when REF cannot be compared. Lesson 02 draws; the other lessons run
- * the same code (common/compare.c), and test_tool_flags.c runs each of them. */
+ * the same code (common/harness/compare.c), and test_tool_flags.c runs each of them. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -15,8 +15,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "compare.h"
-#include "image.h"
+#include "harness/compare.h"
+#include "harness/image_io.h"
 #include "test_support.h"
 
 #define PROGRAM "02_zbuffer"

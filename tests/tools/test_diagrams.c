@@ -20,7 +20,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "image.h"
+#include "harness/image_io.h"
 #include "test_support.h"
 
 typedef struct { double x, y; } Point;

@@ -245,6 +245,7 @@ static PageResult check_page(const char *page)
     if (srcs.count == 0)
         fail_msg("%s: no lesson sources %s for this page", page, pattern);
     add_sources(&srcs, "common/*.[ch]");
+    add_sources(&srcs, "common/harness/*.[ch]");
 
     char *text = read_whole_file(page);
     if (text == NULL)

@@ -35,10 +35,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "image.h"
-#include "mesh.h"
-#include "scene.h"
-#include "shade.h"
+#include "harness/image_io.h"
+#include "harness/mesh_build.h"
+#include "harness/scene.h"
+#include "harness/shade.h"
 #include "test_support.h"
 
 #define GPU "gpu_reference"

@@ -1,7 +1,7 @@
 /* test_gpu_ladder.c: issue 18's quality bar, lesson 06 against a GPU (Mesa's
  * llvmpipe through build/tools/gpu_reference, docs/tools.md).
  *
- * On the ladder (common/ladder.h: pairs of plates 0.05 apart, one pair per
+ * On the ladder (common/harness/ladder.h: pairs of plates 0.05 apart, one pair per
  * distance band), in every depth format and mapping, the fraction of each
  * band's pixels where the back plate wins is within 0.1 of what the GPU shows
  * with the same format and mapping, and 0 for reversed float32 where the
@@ -26,9 +26,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "image.h"
-#include "ladder.h"
-#include "shade.h"
+#include "harness/image_io.h"
+#include "harness/ladder.h"
+#include "harness/shade.h"
 #include "test_support.h"
 
 static const char *const FORMATS[3] = {"unorm16", "unorm24", "float32"};

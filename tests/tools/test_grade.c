@@ -20,7 +20,7 @@
 #include <time.h>
 #include <unistd.h>
 
-#include "file.h"
+#include "harness/file.h"
 #include "json.h"
 #include "shell.h"
 #include "test_support.h"

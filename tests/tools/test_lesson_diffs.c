@@ -29,7 +29,7 @@
 #include <string.h>
 
 #include "error.h"
-#include "file.h"
+#include "harness/file.h"
 #include "test_support.h"
 
 #define READING_MAX 600

@@ -10,7 +10,8 @@
  *     an inherited file waiting to drift;
  *   - the build compiled each lesson from exactly its own and inherited files;
  *   - a snapshot builds with make alone (at -O0) and draws the lesson's
- *     pictures bit for bit. */
+ *     pictures bit for bit;
+ *   - common/ is a small core that includes nothing of common/harness/. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -159,6 +160,29 @@ static void a_snapshot_builds_alone_and_draws_the_lessons_pictures(void **state)
     }
 }
 
+/* common/ is the small core that taught code includes: at most CORE_MAX lines,
+ * and none of it includes the harness (common/harness/), which holds the
+ * program around the lessons. */
+#define CORE_MAX 1500
+static void the_common_core_is_small_and_includes_no_harness(void **state)
+{
+    (void)state;
+    char *out = shell_expect(0, NULL, "cat common/*.c common/*.h | wc -l");
+    int lines = atoi(out);
+    free(out);
+    if (lines <= 0 || lines > CORE_MAX)
+        fail_msg("common/*.[ch] is %d lines: at most %d (what taught code does not include "
+                 "belongs in common/harness/)", lines, CORE_MAX);
+    out = shell_expect(0, NULL,
+                       "for f in common/*.c common/*.h; do "
+                       "  sed -n 's/^#include \"\\(.*\\)\".*/\\1/p' \"$f\" | while read -r h; do "
+                       "    [ -f \"common/$h\" ] || echo \"$f includes $h, not in common/\"; done; "
+                       "done");
+    if (out[0] != '\0')
+        fail_msg("the core includes what is not in it:\n%s", out);
+    free(out);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -167,6 +191,7 @@ int main(void)
         cmocka_unit_test(no_two_lessons_hold_the_same_file),
         cmocka_unit_test(each_lesson_builds_from_its_own_and_inherited_files),
         cmocka_unit_test(a_snapshot_builds_alone_and_draws_the_lessons_pictures),
+        cmocka_unit_test(the_common_core_is_small_and_includes_no_harness),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

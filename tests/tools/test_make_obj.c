@@ -10,8 +10,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "mesh.h"
-#include "scene.h"
+#include "harness/mesh_build.h"
+#include "harness/scene.h"
 #include "test_support.h"
 
 static void assert_usage_error(const char *const *args, const char *expected_line)

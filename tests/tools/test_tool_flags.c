@@ -28,7 +28,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "image.h"
+#include "harness/image_io.h"
 #include "test_support.h"
 
 #define MAX_LESSONS 64

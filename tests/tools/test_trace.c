@@ -43,7 +43,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "depth_rule.h"
+#include "harness/depth_rule.h"
 #include "test_support.h"
 
 #define FOVY_TAN_06 "61.92751306414704" /* 2 atan(0.6) in degrees */

@@ -5,8 +5,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "file.h"
-#include "steps.h"
+#include "harness/file.h"
+#include "harness/steps.h"
 
 const Rgb RENDER_BACKGROUND = {0, 0, 0};
 const Rgb SCREEN_EMPTY = {64, 64, 64};
@@ -175,7 +175,7 @@ bool write_step_pictures(const YBuffer *yb, const Segment *segs, GreyScale scale
         return false;
     bool ok = ybuffer_picture(yb, scale, height, &strip, err);
     if (ok) {
-        ok = steps_write(dir, step, &render, &strip, err); /* common/steps.h */
+        ok = steps_write(dir, step, &render, &strip, err); /* common/harness/steps.h */
         image_free(&strip);
     }
     image_free(&render);

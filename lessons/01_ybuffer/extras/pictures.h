@@ -16,7 +16,7 @@
 #ifndef PICTURES_H
 #define PICTURES_H
 
-#include "image.h"
+#include "harness/image_io.h"
 #include "ybuffer.h"
 
 #define SCENE_HEIGHT 500
@@ -51,7 +51,7 @@ int world_to_row(int y);
 bool write_picture(const Image *im, const char *path, Error *err);
 
 /* step_NNNN.png (the render) and step_NNNN_depth.png (the y-buffer strip) in
- * dir, as every lesson's --steps names them (common/steps.h): the state after
+ * dir, as every lesson's --steps names them (common/harness/steps.h): the state after
  * `step` segments. */
 bool write_step_pictures(const YBuffer *yb, const Segment *segs, GreyScale scale, int height,
                          const char *dir, int step, Error *err);

@@ -6,12 +6,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "ascii.h"
-#include "compare.h"
-#include "file.h"
+#include "harness/ascii.h"
+#include "harness/compare.h"
+#include "harness/file.h"
 #include "pictures.h"
-#include "steps.h"
-#include "trace.h"
+#include "harness/steps.h"
+#include "harness/trace.h"
 #include "world.h"
 
 enum { FLAG_SCENE_OUT, FLAG_YBUFFER_OUT, FLAG_ORDER, FLAG_SEGMENTS, FLAG_COUNT };
@@ -115,7 +115,7 @@ static bool write_outputs(const YBuffer *yb, const Segment *segs, int count, con
     return ok;
 }
 
-/* --trace, --ascii and --compare, once the picture is written (common/trace.h,
+/* --trace, --ascii and --compare, once the picture is written (common/harness/trace.h,
  * ascii.h, compare.h). Returns EXIT_OK, EXIT_IMAGES_DIFFER or EXIT_RUN_FAILED. */
 static int report_tools(const YBuffer *yb, const Segment *segs, const Options *opt, Error *err)
 {

@@ -11,7 +11,7 @@
 
 #include <stdbool.h>
 
-#include "cli.h"
+#include "harness/cli.h"
 #include "ybuffer.h"
 
 #define ROW_GO (-1) /* row_load: go on drawing */

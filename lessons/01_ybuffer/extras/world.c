@@ -4,7 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "file.h"
+#include "harness/file.h"
 
 static const Segment DEFAULT_SEGMENTS[] = {
     {20, 34, 744, 400, {255, 0, 0}},   /* red */

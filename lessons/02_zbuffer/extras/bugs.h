@@ -11,7 +11,7 @@
 #ifndef BUGS_H
 #define BUGS_H
 
-#include "render.h"
+#include "harness/render.h"
 
 /* --bug clear-zero: the lesson's draw_face, with the buffer cleared to 0. */
 extern const Rasterizer CLEAR_ZERO_BUG;

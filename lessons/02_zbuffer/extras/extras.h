@@ -7,7 +7,7 @@
 #ifndef EXTRAS_H
 #define EXTRAS_H
 
-#include "lesson.h"
+#include "harness/lesson.h"
 
 extern const Extras EXTRAS;
 

@@ -6,7 +6,7 @@
 #ifndef PAINTER_H
 #define PAINTER_H
 
-#include "render.h"
+#include "harness/render.h"
 
 /* order[0 .. nfaces-1]: faces by mean view depth of their corners, farthest
  * first; equal means keep mesh order. */

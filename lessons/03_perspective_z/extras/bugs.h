@@ -9,7 +9,7 @@
 #ifndef BUGS_H
 #define BUGS_H
 
-#include "render.h"
+#include "harness/render.h"
 
 /* Draws like ZBUFFER with every corner's d negated; the buffer holds -d, and
  * --depth-out turns it back into d, the depth of the face that is shown. */

@@ -5,7 +5,7 @@
 
 #include "raster.h"
 #include "bugs.h"
-#include "compare_naive.h"
+#include "harness/compare_naive.h"
 #include "naive.h"
 
 enum { FLAG_DEPTH_INTERP, FLAG_COMPARE_NAIVE, FLAG_BUG, FLAG_COUNT };

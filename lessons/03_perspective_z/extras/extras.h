@@ -3,12 +3,12 @@
  *
  *   --depth-interp naive     draw with lesson 02's rule, d linear (naive.c)
  *   --compare-naive FILE     draw with both rules, mark where they differ
- *                            (common/compare_naive.c)
+ *                            (common/harness/compare_naive.c)
  *   --bug negated-w          store -d where d belongs (bugs.c) */
 #ifndef EXTRAS_H
 #define EXTRAS_H
 
-#include "lesson.h"
+#include "harness/lesson.h"
 
 extern const Extras EXTRAS;
 

@@ -12,7 +12,7 @@
 #ifndef BUGS_H
 #define BUGS_H
 
-#include "render.h"
+#include "harness/render.h"
 
 extern const Rasterizer NO_CLIP_BUG;
 

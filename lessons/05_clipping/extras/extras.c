@@ -5,7 +5,7 @@
 
 #include "bugs.h"
 #include "clip.h"
-#include "compare_naive.h"
+#include "harness/compare_naive.h"
 #include "scanline.h"
 
 enum { FLAG_COMPARE_DROP, FLAG_BUG, FLAG_COUNT };

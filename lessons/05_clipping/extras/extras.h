@@ -4,11 +4,11 @@
  *   --bug no-clip            divide every corner by its w, w <= 0 too (bugs.c)
  *   --compare-drop FILE      draw with lesson 04's rule (a face with a corner at
  *                            d <= near dropped whole) and with clipping, and
- *                            mark where they differ (common/compare_naive.c) */
+ *                            mark where they differ (common/harness/compare_naive.c) */
 #ifndef EXTRAS_H
 #define EXTRAS_H
 
-#include "lesson.h"
+#include "harness/lesson.h"
 
 extern const Extras EXTRAS;
 

@@ -5,8 +5,8 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "compare_naive.h"
-#include "ladder.h"
+#include "harness/compare_naive.h"
+#include "harness/ladder.h"
 #include "plot.h"
 
 enum { FLAG_FORMAT, FLAG_MAPPING, FLAG_PLOT, FLAG_COUNT };

@@ -8,7 +8,7 @@
 #define EXTRAS_H
 
 #include "depth_format.h"
-#include "lesson.h"
+#include "harness/lesson.h"
 
 extern const Extras EXTRAS;
 

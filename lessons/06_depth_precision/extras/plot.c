@@ -7,10 +7,10 @@
 
 #include "depth_format.h"
 #include "extras.h"
-#include "font.h"
-#include "image.h"
-#include "ladder.h"
-#include "render.h"
+#include "harness/font.h"
+#include "harness/image_io.h"
+#include "harness/ladder.h"
+#include "harness/render.h"
 
 #define PICTURE_W 900
 #define PICTURE_H 600

@@ -6,9 +6,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "cli.h"
-#include "compare_naive.h"
-#include "font.h"
+#include "harness/cli.h"
+#include "harness/compare_naive.h"
+#include "harness/font.h"
 
 enum { FLAG_Z_MODE, FLAG_SORT, FLAG_BUG, FLAG_COLOUR_OUT, FLAG_HEAT_OUT, FLAG_COUNT };
 

@@ -6,7 +6,7 @@
 #define EXTRAS_H
 
 #include "early_z.h"
-#include "lesson.h"
+#include "harness/lesson.h"
 
 extern const Extras EXTRAS;
 

@@ -11,7 +11,7 @@
 #include <string.h>
 
 #include "clip.h"
-#include "shade.h"
+#include "harness/shade.h"
 
 typedef struct { double d; int face; } Key;
 

@@ -6,7 +6,7 @@
 
 #include "early_z.h"
 #include "hierarchical_z.h"
-#include "lesson.h"
+#include "harness/lesson.h"
 
 extern const Extras EXTRAS;
 

@@ -13,7 +13,7 @@
 #include <string.h>
 
 #include "clip.h"
-#include "shade.h"
+#include "harness/shade.h"
 
 typedef struct { double d; int face; } Key;
 

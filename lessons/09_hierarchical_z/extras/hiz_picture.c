@@ -11,7 +11,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "font.h"
+#include "harness/font.h"
 
 static Rgb darker(Rgb c)
 {

@@ -6,7 +6,7 @@
 
 #include "fast_raster.h"
 #include "hierarchical_z.h"
-#include "lesson.h"
+#include "harness/lesson.h"
 
 extern const Extras EXTRAS;
 

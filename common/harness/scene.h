@@ -5,7 +5,7 @@
 #ifndef SCENE_H
 #define SCENE_H
 
-#include "mesh.h"
+#include "mesh_build.h"
 #include "vecmath.h"
 
 typedef struct {

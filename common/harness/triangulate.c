@@ -12,7 +12,7 @@
  * component of Newell's normal), mirrored if need be so that it winds
  * counter-clockwise there. Triangles keep the polygon's corner order, so they
  * wind the same way as the polygon did in 3-D. */
-#include "mesh.h"
+#include "mesh_build.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -5,7 +5,7 @@
 #ifndef SCENE_PARTS_H
 #define SCENE_PARTS_H
 
-#include "mesh.h"
+#include "mesh_build.h"
 #include "vecmath.h"
 
 /* The vertices p[0 .. n-1] (n <= 4), then one face through them in that order. */

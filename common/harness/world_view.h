@@ -29,8 +29,8 @@
 
 #include "camera.h"
 #include "error.h"
-#include "image.h"
-#include "mesh.h"
+#include "image_io.h"
+#include "mesh_build.h"
 
 #define WORLD_PANEL 400       /* each panel is this many pixels on a side */
 #define WORLD_GAP 4           /* between the two panels */

@@ -20,7 +20,7 @@
 #include <stdio.h>
 
 #include "error.h"
-#include "image.h"
+#include "image_io.h"
 
 /* Where the diff picture of --out goes: a trailing ".png" becomes ".diff.png";
  * any other name gets ".diff.png" added. False when buf is too small. */

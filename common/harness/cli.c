@@ -16,7 +16,7 @@
 #include "camera.h"
 #include "compare.h"
 #include "file.h"
-#include "image.h"
+#include "image_io.h"
 
 /* The camera that frames a mesh when the lesson has no scene to borrow one from:
  * three units back along +Z, looking at the origin. */

@@ -4,7 +4,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "image.h"
+#include "image_io.h"
 
 const double LADDER_DISTANCE[LADDER_BANDS] = {1, 3, 10, 30, 100, 300};
 

@@ -18,7 +18,7 @@
 #include <stdint.h>
 
 #include "error.h"
-#include "mesh.h"
+#include "mesh_build.h"
 
 #define LADDER_BANDS 6
 #define LADDER_GAP 0.05 /* metres (world units) between front and back plate */

@@ -26,8 +26,8 @@
 
 #include "camera.h"
 #include "error.h"
-#include "image.h"
-#include "mesh.h"
+#include "image_io.h"
+#include "mesh_build.h"
 
 /* What a pixel's colour shows (--shade flat|id|depth): the three modes above. */
 typedef enum { SHADE_FLAT, SHADE_ID, SHADE_DEPTH } ShadeMode;

@@ -21,7 +21,7 @@
 #include <stdbool.h>
 
 #include "error.h"
-#include "image.h"
+#include "image_io.h"
 
 #define STEPS_MAX_FACES 2000
 

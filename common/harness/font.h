@@ -14,7 +14,7 @@
 #ifndef FONT_H
 #define FONT_H
 
-#include "image.h"
+#include "image_io.h"
 
 #define FONT_GLYPH_WIDTH 5
 #define FONT_GLYPH_HEIGHT 7

@@ -16,7 +16,7 @@
  *
  * The mesh is built in a fresh Mesh and handed over only when the whole file
  * was read: a caller never sees half a mesh. */
-#include "mesh.h"
+#include "mesh_build.h"
 
 #include <errno.h>
 #include <limits.h>

@@ -159,13 +159,6 @@ static DropReason clipping_drop_reason(const ScreenFace *f)
     return behind ? BEHIND_NEAR : KEEP;
 }
 
-bool screen_face_is_finite(const ScreenFace *f)
-{
-    for (int k = 0; k < f->n; k++)
-        if (!isfinite(f->v[k].x) || !isfinite(f->v[k].y) || !isfinite(f->v[k].d))
-            return false;
-    return true;
-}
 
 bool render_face_dropped(const Render *r, int i)
 {
@@ -422,9 +415,3 @@ SceneInfo render_fit_camera(const Mesh *m, int width, int height)
     return s;
 }
 
-ScreenFace screen_triangle(const ScreenVertex v[3], int face)
-{
-    static const Tri first = {{0, 1, 2}};
-    ScreenFace f = {.face = face, .n = 3, .v = v, .tris = &first, .convex = true};
-    return f;
-}
