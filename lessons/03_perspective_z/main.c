@@ -3,7 +3,7 @@
  * The outline of the program. What this lesson teaches is in raster.c: clear
  * the depth buffer, then draw every face, keeping per pixel the nearest
  * fragment. Everything around it (the command line, the scenes, the pictures,
- * the tools that watch the depth test) is common/, reached through lesson.h;
+ * the tools that watch the depth test) is common/harness/, reached through lesson.h;
  * what the lesson shows but does not teach (--depth-interp naive,
  * --compare-naive, --bug) is in extras/. */
 #include "extras/extras.h"

@@ -2,7 +2,7 @@
  *
  * The outline of the program. What this lesson teaches is in scanline.c:
  * clear the buffer of 1/d to 0, then fill every face scanline by scanline,
- * keeping per pixel the largest 1/d. Everything around it is common/, reached
+ * keeping per pixel the largest 1/d. Everything around it is common/harness/, reached
  * through lesson.h. The report ends with "front object detection". */
 #include <math.h>
 #include <stdio.h>

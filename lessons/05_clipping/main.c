@@ -3,7 +3,7 @@
  * The outline of the program. What this lesson teaches is in clip.c: every
  * face is clipped in clip space against the near and far planes, divided,
  * and handed to lesson 04's scanline z-buffer (scanline.c, unchanged).
- * Everything around it is common/, reached through lesson.h; what the lesson
+ * Everything around it is common/harness/, reached through lesson.h; what the lesson
  * shows but does not teach (--bug no-clip, --compare-drop) is in extras/. */
 #include <math.h>
 #include <stdio.h>
