@@ -53,7 +53,14 @@ list() {
     dir=$1
     (cd "$dir" && find . -type f \( -name '*.c' -o -name '*.h' \) | sed 's|^\./||') |
         while read -r f; do echo "$f $dir/$f"; done
+    # A file the lesson holds itself wins over a row that names it (check
+    # reports the row); a row naming what is not there is an error.
     inherited "$dir" | while read -r text owner path; do
+        [ -f "$dir/$text" ] && continue
+        if [ ! -f "lessons/$owner/$path" ]; then
+            echo "$prog: error: $dir/README.md inherits $text from lessons/$owner/$path, which is not there" >&2
+            exit 1
+        fi
         echo "$text lessons/$owner/$path"
     done
 }
@@ -70,7 +77,8 @@ assemble() {
     for dir in lessons/[0-9][0-9]_*; do
         [ -d "$dir" ] || continue
         name=${dir#lessons/}
-        want=$(list "$dir" | sort)
+        want=$(list "$dir") || exit 1
+        want=$(echo "$want" | sort)
         same=0
         [ -f "$out/$name/.files" ] && [ "$(cat "$out/$name/.files")" = "$want" ] && same=1
         # A tree copied to another depth has links that lead elsewhere: the
@@ -101,7 +109,8 @@ assemble() {
 
 copy() {
     dir=$1 dest=$2
-    list "$dir" | while read -r rel target; do
+    files=$(list "$dir") || exit 1
+    echo "$files" | while read -r rel target; do
         mkdir -p "$dest/$(dirname "$rel")" && cp "$target" "$dest/$rel" ||
             { echo "$prog: error: cannot copy $target to $dest/$rel" >&2; exit 1; }
     done
@@ -141,7 +150,8 @@ check() {
 [ -d lessons ] || usage "run it from the top of the series (where lessons/ is)"
 case $1 in
     list) [ $# -eq 2 ] || usage "usage: lesson-tree.sh list LESSON"
-          list "$(lesson_dir "$2")" | sort ;;
+          files=$(list "$(lesson_dir "$2")") || exit 1
+          echo "$files" | sort ;;
     assemble) [ $# -eq 2 ] || usage "usage: lesson-tree.sh assemble DIR"
           assemble "${2%/}" ;;
     copy) [ $# -eq 3 ] || usage "usage: lesson-tree.sh copy LESSON DEST"

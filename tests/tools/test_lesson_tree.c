@@ -78,6 +78,20 @@ static void a_wrong_inherited_row_is_reported(void **state)
         if (!strstr(out, faults[i]))
             fail_msg("lesson-tree.sh check did not say \"%s\":\n%s", faults[i], out);
     free(out);
+    /* The build stops at a row naming what is not there, with one line... */
+    snprintf(command, sizeof command, "sh %s/tools/lesson-tree.sh list 03_c", here);
+    out = shell_expect(1, dir, command);
+    if (!strstr(out, "lesson-tree: error: lessons/03_c/README.md inherits y.c from "
+                     "lessons/01_a/y.c, which is not there\n"))
+        fail_msg("lesson-tree.sh list did not name the missing file:\n%s", out);
+    free(out);
+    /* ... and a file the lesson holds wins over the row that names it. */
+    snprintf(command, sizeof command,
+             "sed -i '/y.c/d' lessons/03_c/README.md && sh %s/tools/lesson-tree.sh list 03_c", here);
+    out = shell_expect(0, dir, command);
+    if (!strstr(out, "z.c lessons/03_c/z.c\n") || strstr(out, "lessons/01_a/z.c"))
+        fail_msg("lessons/03_c's own z.c should be its z.c:\n%s", out);
+    free(out);
 }
 
 static void no_two_lessons_hold_the_same_file(void **state)
