@@ -1,4 +1,4 @@
-/* depth_buffer.c: the buffer of 1/d that scanline.c's spans test (scanline.h). */
+/* depth_buffer.c: the buffer of 1/d that scanline.c's spans test (depth_buffer.h). */
 #include "scanline.h"
 #include <math.h>
 
@@ -34,16 +34,10 @@ inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 }
 
 /* A stored 1/d back as the view depth d; 0 (nothing drawn) is infinitely far. */
-static double stored_to_depth(const Target *t, float stored)
+double stored_to_depth(const Target *t, float stored)
 {
     (void)t; /* 1/d needs nothing else */
     return stored > 0 ? 1.0 / stored : INFINITY;
-}
-
-/* Front object detection: the view depth of the nearest surface at (x, y). */
-double nearest_distance_at(const Target *t, int x, int y)
-{
-    return stored_to_depth(t, t->depth[(size_t)y * (size_t)t->width + (size_t)x]);
 }
 
 const Rasterizer SCANLINE_ZBUFFER = {

@@ -1,8 +1,5 @@
-/* scanline.h: lesson 04, the z-buffer as 1990s software renderers wrote it.
- *
- *   stored value   1/d, the reciprocal of the view depth
- *   cleared to     0, which means "infinitely far"
- *   a fragment     wins when its 1/d > stored (ties keep the first one drawn)
+/* scanline.h: lesson 04, the z-buffer as 1990s software renderers wrote it:
+ * the walk, whose spans test each fragment against the buffer (depth_buffer.h).
  *   rasterizer     a convex polygon, drawn whole: its two sides walked down
  *                  row by row, x and 1/d stepping by a constant per row, then
  *                  1/d by a constant per pixel along each span
@@ -13,14 +10,10 @@
 #ifndef SCANLINE_H
 #define SCANLINE_H
 
-#include <stddef.h>
 #include <stdint.h>
 
+#include "depth_buffer.h"
 #include "rasterizer.h"
-#include "target.h"
-
-/* Nothing drawn yet: 1/d = 0 is infinitely far; every surface (1/d > 0) is nearer. */
-#define CLEARED_INV_DEPTH 0.0f
 
 #define SUBPIXEL_BITS 8                   /* as GPUs do: 1/256 of a pixel */
 #define SUBPIXEL_ONE (1 << SUBPIXEL_BITS) /* one pixel in fixed point */
@@ -46,8 +39,6 @@ typedef struct {
 } Edge;
 
 /* The steps, in the order scanline.c takes them (each is explained there). */
-void clear_depth(Target *t);                              /* 1/d = 0 everywhere */
-bool depth_test(Target *t, size_t i, int face, float inv_d); /* the nearer 1/d wins */
 bool edge_setup(Edge *e, int64_t ax, int64_t ay, double inv_a, int64_t bx, int64_t by,
                 double inv_b, int y_first);               /* false: no row to walk */
 void edge_step(Edge *e);                                  /* one scanline down */
@@ -55,9 +46,5 @@ void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, 
 /* A convex polygon drawn whole; false: drawn as its triangles instead. */
 bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far);
 void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
-double nearest_distance_at(const Target *t, int x, int y); /* d = 1/stored, inf if none */
-
-/* The lesson as the pipeline sees it: clear to 0, draw_face, and d = 1/stored. */
-extern const Rasterizer SCANLINE_ZBUFFER;
 
 #endif

@@ -1,8 +1,6 @@
 /* clip.c: lesson 05's clipping, step by step (clip.h, and docs/05_clipping.md). */
 #include "clip.h"
 
-#include <math.h>
-
 #include "polygon.h"
 #include "scanline.h"
 
@@ -120,13 +118,8 @@ void draw_clipped_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
         }
 }
 
-/* A stored 1/d back as the view depth d; 0 (nothing drawn) is infinitely far. */
-static double stored_to_depth(const Target *t, float stored)
-{
-    (void)t;
-    return stored > 0 ? 1.0 / stored : INFINITY;
-}
-
+/* The lesson's buffer (scanline.h: its clear and its stored value as d), each
+ * face clipped first. */
 const Rasterizer CLIPPING_ZBUFFER = {
     .clear = clear_depth, .draw_face = draw_clipped_face, .stored_to_depth = stored_to_depth,
     .clips = true,

@@ -7,7 +7,7 @@
  *   clipping     Sutherland-Hodgman, one plane after the other; a new corner
  *                is interpolated linearly in clip space, where that is exact
  *   then         the divide by w_c (> 0 once the near plane has cut), the
- *                viewport, and lesson 04's scanline z-buffer of 1/d, unchanged
+ *                viewport, and lesson 04's scanline into the lesson's buffer
  * x and y are not clipped: the guard band (guard_band.h) does that job. */
 #ifndef CLIP_H
 #define CLIP_H
@@ -27,7 +27,7 @@ int clip_polygon(const Vec4 *in, int n, Vec4 *out);              /* near, then f
 ScreenVertex clip_to_screen(Vec4 c, int width, int height);      /* divide, viewport */
 void draw_clipped_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
 
-/* Lesson 04's buffer of 1/d, handed every face the near plane leaves something of. */
+/* The lesson's buffer (scanline.h), handed every face the near plane leaves something of. */
 extern const Rasterizer CLIPPING_ZBUFFER;
 
 #endif

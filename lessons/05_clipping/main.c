@@ -17,7 +17,7 @@
 static void print_front_object(const Target *t)
 {
     int x = t->width / 2, y = t->height / 2;
-    double d = nearest_distance_at(t, x, y);
+    double d = stored_to_depth(t, t->depth[y * t->width + x]); /* the nearest surface there */
     if (isinf(d))
         printf("  front object: nothing at the screen centre (%d,%d)\n", x, y);
     else

@@ -29,12 +29,6 @@ static void draw_face_no_clip(Target *t, const ScreenFace *f, const DrawContext 
     free(v);
 }
 
-static double stored_to_depth(const Target *t, float stored)
-{
-    (void)t;
-    return stored > 0 ? 1.0 / stored : INFINITY;
-}
-
 /* clips: render_faces hands it every face, as it would hand a GPU. */
 const Rasterizer NO_CLIP_BUG = {.clear = clear_depth, .draw_face = draw_face_no_clip,
                                 .stored_to_depth = stored_to_depth, .clips = true};
