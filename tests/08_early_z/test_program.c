@@ -242,7 +242,7 @@ static void prepass_heat_map_is_all_ones(void **state)
                           heat.path, NULL};
     free(run_ok(PROGRAM, args));
     Image h = read_png(heat.path), i = read_png(id.path);
-    assert_int_equal(h.width, 160);
+    assert_true(h.width >= 160); /* wider when its legend needs it (harness/legend.h) */
     assert_true(h.height > 120); /* the legend */
     Rgb once = {40, 90, 200}, never = {0, 0, 0};
     for (int y = 0; y < 120; y++)

@@ -58,52 +58,6 @@ EarlyZ early_z_chosen(const Run *run)
     return z;
 }
 
-/* ---- The heat map ----------------------------------------------------------- */
-
-static const Rgb HEAT[HEAT_CLASSES] = {
-    {0, 0, 0},      {40, 90, 200},  {60, 170, 80},   {235, 205, 40},
-    {240, 120, 30}, {205, 35, 40},  {255, 255, 255},
-};
-
-Rgb heat_colour(uint32_t times)
-{
-    return HEAT[times < HEAT_CLASSES - 1 ? times : HEAT_CLASSES - 1];
-}
-
-/* The picture, then a band: "shaded:" and one swatch and number per class. */
-bool write_heat_map(const uint32_t *count, int width, int height, const char *path, Error *err)
-{
-    Image im;
-    if (!image_init(&im, width, height + HEAT_LEGEND_HEIGHT, err))
-        return false;
-    image_fill(&im, (Rgb){48, 48, 48});
-    for (int y = 0; y < height; y++)
-        for (int x = 0; x < width; x++)
-            image_set(&im, x, y, heat_colour(count[(size_t)y * (size_t)width + (size_t)x]));
-    Rgb white = {255, 255, 255};
-    int ty = height + (HEAT_LEGEND_HEIGHT - FONT_GLYPH_HEIGHT) / 2, x = 4;
-    draw_text(&im, x, ty, "shaded:", white);
-    x += text_width("shaded:") + 6;
-    for (int k = 0; k < HEAT_CLASSES; k++) {
-        char label[8];
-        snprintf(label, sizeof label, k == HEAT_CLASSES - 1 ? "%d+" : "%d", k);
-        for (int dy = 0; dy < 10; dy++)
-            for (int dx = 0; dx < 10; dx++)
-                image_set(&im, x + dx, ty - 2 + dy, HEAT[k]);
-        for (int d = 0; d < 10; d++) { /* a grey frame: black shows on the band */
-            image_set(&im, x + d, ty - 2, (Rgb){150, 150, 150});
-            image_set(&im, x + d, ty + 7, (Rgb){150, 150, 150});
-            image_set(&im, x, ty - 2 + d, (Rgb){150, 150, 150});
-            image_set(&im, x + 9, ty - 2 + d, (Rgb){150, 150, 150});
-        }
-        draw_text(&im, x + 13, ty, label, white);
-        x += 13 + text_width(label) + 8;
-    }
-    bool ok = render_make_parent_dirs(path, err) && image_write_png(&im, path, err);
-    image_free(&im);
-    return ok;
-}
-
 static bool write_colour(const EarlyZ *z, int width, int height, const char *path, Error *err)
 {
     Image im;

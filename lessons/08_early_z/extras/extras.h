@@ -6,6 +6,7 @@
 #define EXTRAS_H
 
 #include "early_z.h"
+#include "heat_map.h"
 #include "harness/lesson.h"
 
 extern const Extras EXTRAS;
@@ -27,9 +28,5 @@ void draw_shaded_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
 bool early_z_begin(EarlyZ *z, Run *run, Error *err); /* the run draws through z */
 void early_z_free(EarlyZ *z);
 
-#define HEAT_CLASSES 7 /* 0, 1, ..., 5 and 6 or more times shaded */
-#define HEAT_LEGEND_HEIGHT 22 /* the band under the picture */
-Rgb heat_colour(uint32_t times);
-bool write_heat_map(const uint32_t *count, int width, int height, const char *path, Error *err);
 
 #endif

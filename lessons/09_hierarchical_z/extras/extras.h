@@ -5,6 +5,7 @@
 #define EXTRAS_H
 
 #include "early_z.h"
+#include "heat_map.h"
 #include "hierarchical_z.h"
 #include "harness/lesson.h"
 
@@ -29,10 +30,6 @@ void draw_shaded_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
 bool early_z_begin(EarlyZ *z, Run *run, Error *err); /* the run draws through z */
 void early_z_free(EarlyZ *z);
 
-#define HEAT_CLASSES 7 /* 0, 1, ..., 5 and 6 or more times shaded */
-#define HEAT_LEGEND_HEIGHT 22 /* the band under the picture */
-Rgb heat_colour(uint32_t times);
-bool write_heat_map(const uint32_t *count, int width, int height, const char *path, Error *err);
 
 #define HIZ_LEGEND_HEIGHT 22 /* --hiz-out, each tile in the grey of its farthest d */
 bool write_hiz_picture(const Target *t, const char *path, Error *err);

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 
 #include "harness/font.h"
+#include "harness/legend.h"
 
 static Rgb darker(Rgb c)
 {
@@ -19,37 +20,36 @@ static Rgb darker(Rgb c)
 }
 
 /* The legend band: "tile's farthest d:", a ramp labelled at both ends, then
- * a swatch of the background, "far plane". */
-static void draw_legend(Image *im, int top, double dmin, double dmax)
+ * a swatch of the background, "far plane". ctx: the range, {dmin, dmax}. */
+static void draw_legend(LegendBand *b, const void *ctx)
 {
-    Rgb white = {255, 255, 255};
-    int ty = top + (HIZ_LEGEND_HEIGHT - FONT_GLYPH_HEIGHT) / 2, x = 4;
+    const double *range = ctx, dmin = range[0], dmax = range[1];
+    Rgb white = {255, 255, 255}, ramp[100];
     char text[64];
-    draw_text(im, x, ty, "tile's farthest d:", white);
-    x += text_width("tile's farthest d:") + 6;
+    legend_text(b, "tile's farthest d:", white);
+    legend_gap(b, 6);
     snprintf(text, sizeof text, "%.3g", dmin);
-    draw_text(im, x, ty, text, white);
-    x += text_width(text) + 4;
-    float ramp[100];
+    legend_text(b, text, white);
+    legend_gap(b, 4);
+    float d[100];
     Image strip = {.width = 100, .height = 1, .rgb = NULL};
     Error err;
-    if (image_init(&strip, 100, 1, &err)) {
-        for (int k = 0; k < 100; k++) /* 100 steps even in 1/d, as the greys go */
-            ramp[k] = (float)(1.0 / (1.0 / dmin + (1.0 / dmax - 1.0 / dmin) * k / 99.0));
-        depth_to_grey_between(ramp, dmin, dmax, &strip);
-        for (int k = 0; k < 100 && x + k < im->width; k++)
-            for (int dy = -2; dy < FONT_GLYPH_HEIGHT + 2; dy++)
-                image_set(im, x + k, ty + dy, image_get(&strip, k, 0));
-        image_free(&strip);
-    }
-    x += 104;
+    bool ok = image_init(&strip, 100, 1, &err);
+    for (int k = 0; ok && k < 100; k++) /* 100 steps even in 1/d, as the greys go */
+        d[k] = (float)(1.0 / (1.0 / dmin + (1.0 / dmax - 1.0 / dmin) * k / 99.0));
+    if (ok)
+        depth_to_grey_between(d, dmin, dmax, &strip);
+    for (int k = 0; k < 100; k++)
+        ramp[k] = ok ? image_get(&strip, k, 0) : DEPTH_BACKGROUND;
+    image_free(&strip);
+    legend_ramp(b, ramp, 100, FONT_GLYPH_HEIGHT + 4);
+    legend_gap(b, 4);
     snprintf(text, sizeof text, "%.3g", dmax);
-    draw_text(im, x, ty, text, white);
-    x += text_width(text) + 12;
-    for (int dy = -2; dy < FONT_GLYPH_HEIGHT + 2; dy++)
-        for (int dx = 0; dx < 10 && x + dx < im->width; dx++)
-            image_set(im, x + dx, ty + dy, DEPTH_BACKGROUND);
-    draw_text(im, x + 14, ty, "far plane (a pixel not drawn)", white);
+    legend_text(b, text, white);
+    legend_gap(b, 12);
+    legend_swatch(b, DEPTH_BACKGROUND, 10, FONT_GLYPH_HEIGHT + 4, false);
+    legend_gap(b, 4);
+    legend_text(b, "far plane (a pixel not drawn)", white);
 }
 
 bool write_hiz_picture(const Target *t, const char *path, Error *err)
@@ -75,21 +75,19 @@ bool write_hiz_picture(const Target *t, const char *path, Error *err)
     if (ok)
         depth_to_grey_between(d, dmin, dmax, &tiles);
     free(d);
-    if (ok && !image_init(&im, w, hgt + HIZ_LEGEND_HEIGHT, err)) {
-        image_free(&tiles);
-        ok = false;
-    }
     if (!ok)
         return false;
-    image_fill(&im, (Rgb){48, 48, 48});
     for (int y = 0; y < hgt; y++)
         for (int x = 0; x < w; x++) {
             Rgb c = image_get(&tiles, x, y);
             bool edge = h->tile > 2 && (x % h->tile == h->tile - 1 || y % h->tile == h->tile - 1);
-            image_set(&im, x, y, edge ? darker(c) : c);
+            image_set(&tiles, x, y, edge ? darker(c) : c);
         }
+    double range[2] = {dmin, dmax};
+    ok = image_with_legend(&im, &tiles, HIZ_LEGEND_HEIGHT, draw_legend, range, err);
     image_free(&tiles);
-    draw_legend(&im, hgt, dmin, dmax);
+    if (!ok)
+        return false;
     ok = render_make_parent_dirs(path, err) && image_write_png(&im, path, err);
     image_free(&im);
     return ok;
