@@ -75,7 +75,13 @@ static char *temp_name_for(const char *path)
  * which are async-signal-safe. */
 #define TEMP_SLOTS 8192 /* --steps: two files per face, up to 2000 faces, and the rest */
 #define DIR_SLOTS 64
-static const int CLEANUP_SIGNALS[] = {SIGINT, SIGTERM, SIGHUP, SIGPIPE};
+/* Every signal whose default action ends the program without a core dump, and
+ * SIGQUIT and SIGABRT (an assertion) too: a run ended by any of them leaves
+ * no temporary file. SIGXFSZ (a file size limit, ulimit -f) is ignored
+ * instead, so that the write fails and the run says so with status 1. */
+static const int CLEANUP_SIGNALS[] = {SIGINT,  SIGTERM,   SIGHUP,  SIGPIPE, SIGQUIT,
+                                      SIGALRM, SIGUSR1,   SIGUSR2, SIGABRT, SIGVTALRM,
+                                      SIGPROF, SIGXCPU};
 #define CLEANUP_SIGNAL_COUNT ((int)(sizeof CLEANUP_SIGNALS / sizeof CLEANUP_SIGNALS[0]))
 
 static char *volatile temp_slot[TEMP_SLOTS];
@@ -99,6 +105,9 @@ static void remove_temporaries_and_exit(int sig)
  * stays ignored, and one with a handler of the program's keeps it. */
 static void install_handlers(void)
 {
+    struct sigaction fsize;
+    if (sigaction(SIGXFSZ, NULL, &fsize) == 0 && fsize.sa_handler == SIG_DFL)
+        signal(SIGXFSZ, SIG_IGN);
     for (int i = 0; i < CLEANUP_SIGNAL_COUNT; i++) {
         struct sigaction old, sa;
         if (sigaction(CLEANUP_SIGNALS[i], NULL, &old) != 0 || old.sa_handler != SIG_DFL)

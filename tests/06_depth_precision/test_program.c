@@ -145,6 +145,21 @@ static void precision_plot_is_written(void **state)
     image_free(&im);
 }
 
+/* A near plane of 1e-200: depth steps underflow to 0, which a log axis
+ * cannot show; the plot leaves them out and ends (it used to loop for ever). */
+static void precision_plot_of_a_tiny_near_plane_ends(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("l06_plot_tiny");
+    Path plot = in_dir(dir, "plot.png"), out = in_dir(dir, "x.png");
+    const char *args[] = {"--width", "8", "--height", "8", "--near", "1e-200", "--out", out.path,
+                          "--precision-plot", plot.path, NULL};
+    free(run_ok(PROGRAM, args));
+    Image im = read_png(plot.path);
+    assert_true(im.width > 100 && im.height > 100);
+    image_free(&im);
+}
+
 /* --far inf with reversed: z_w = n/d, and the ladder is as clean as at far 1000. */
 static void far_inf_with_reversed_float32(void **state)
 {
@@ -197,6 +212,7 @@ int main(void)
         cmocka_unit_test(default_run_reports_steps_and_bands),
         cmocka_unit_test(float32_agrees_with_lesson_05_on_the_built_in_scenes),
         cmocka_unit_test(precision_plot_is_written),
+        cmocka_unit_test(precision_plot_of_a_tiny_near_plane_ends),
         cmocka_unit_test(far_inf_with_reversed_float32),
         cmocka_unit_test(bad_command_lines_are_refused_with_status_2),
     };

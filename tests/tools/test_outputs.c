@@ -4,8 +4,9 @@
  *   - two outputs, or an output and an input (OBJ, .mtl, segments, --compare
  *     reference), that are one file under two names are refused, status 2;
  *   - a failed output leaves no output of the run new or changed;
- *   - SIGINT, SIGTERM and SIGHUP during a large write remove the temporary
- *     files, status 128 + the signal;
+ *   - SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGUSR1 and SIGABRT during a
+ *     large write remove the temporary files, status 128 + the signal; a
+ *     file size limit (ulimit -f) is a failure with one line, status 1;
  *   - pipes and other files that are not regular are refused quickly;
  *   - --out - writes the PNG on standard output, the summary on stderr;
  *   - a failed write to standard output is a failure (status 1);
@@ -31,6 +32,7 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "shell.h"
 #include "test_support.h"
 
 #define TEXT_MAX 2048
@@ -179,9 +181,9 @@ static pid_t start(const char *program, const char *const *args, int stdout_fd)
     if (pid == 0) {
         /* As from a terminal: a background job's shell ignores SIGINT, and
          * the lesson leaves an ignored signal ignored. */
-        signal(SIGINT, SIG_DFL);
-        signal(SIGTERM, SIG_DFL);
-        signal(SIGHUP, SIG_DFL);
+        const int all[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGUSR1, SIGABRT};
+        for (size_t k = 0; k < sizeof all / sizeof all[0]; k++)
+            signal(all[k], SIG_DFL);
         int null = open("/dev/null", O_WRONLY);
         dup2(stdout_fd >= 0 ? stdout_fd : null, STDOUT_FILENO);
         dup2(null, STDERR_FILENO);
@@ -207,7 +209,7 @@ static int wait_status(pid_t pid)
 static void signal_during_a_large_write_removes_the_temporary_files(void **state)
 {
     (void)state;
-    const int sigs[] = {SIGINT, SIGTERM, SIGHUP};
+    const int sigs[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGUSR1, SIGABRT};
     for (size_t i = 0; i < sizeof sigs / sizeof sigs[0]; i++) {
         const char *dir = test_dir("outputs_signal");
         Path out = in_dir(dir, "out.png"), ids = in_dir(dir, "ids.png"),
@@ -231,6 +233,31 @@ static void signal_during_a_large_write_removes_the_temporary_files(void **state
         if (entries(dir) != 0)
             fail_msg("signal %d left %d files in %s", sigs[i], entries(dir), dir);
     }
+}
+
+/* A file size limit: the write fails (SIGXFSZ is ignored), one line says
+ * so, status 1, and no file of the run is left. */
+static void a_file_size_limit_is_a_failure_with_one_line(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("outputs_fsize");
+    char here[TEXT_MAX];
+    assert_non_null(getcwd(here, sizeof here));
+    const char *bin = getenv("BIN_DIR") ? getenv("BIN_DIR") : "build/bin";
+    ShellResult r = run_shell(dir, 60, "ulimit -f 8 && exec %s%s%s/02_zbuffer --width 512 "
+                              "--height 512 --out out.png --id-out id.png >/dev/null",
+                              bin[0] == '/' ? "" : here, bin[0] == '/' ? "" : "/", bin);
+    const char *want = "02_zbuffer: error: cannot write ";
+    size_t lines = 0;
+    for (const char *c = r.output; *c; c++)
+        lines += *c == '\n';
+    if (r.status != 1 || lines != 1 || strncmp(r.output, want, strlen(want)) != 0 ||
+        !strstr(r.output, "File too large"))
+        fail_msg("under ulimit -f 8: status %d, wanted 1 and one line \"%s...: File too "
+                 "large\":\n%s", r.status, want, r.output);
+    if (entries(dir) != 0)
+        fail_msg("the failed run left %d files in %s", entries(dir), dir);
+    shell_result_free(&r);
 }
 
 /* ---- 4. pipes, standard output ---- */
@@ -418,6 +445,7 @@ int main(void)
         cmocka_unit_test(outputs_and_inputs_are_compared_by_identity),
         cmocka_unit_test(failed_output_leaves_no_output_of_the_run),
         cmocka_unit_test(signal_during_a_large_write_removes_the_temporary_files),
+        cmocka_unit_test(a_file_size_limit_is_a_failure_with_one_line),
         cmocka_unit_test(pipes_are_refused_without_waiting),
         cmocka_unit_test(out_dash_writes_the_png_to_standard_output),
         cmocka_unit_test(lost_standard_output_is_a_failure),

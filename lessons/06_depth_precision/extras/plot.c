@@ -54,17 +54,37 @@ static void line(Image *im, int x0, int y0, int x1, int y1, int r, Rgb c, bool d
     }
 }
 
+/* Every how many decades a grid line and label goes, so that labels at
+ * least min_gap pixels apart fit in length pixels: 1 but for a huge range
+ * (a near plane of 1e-200 spans 203 decades). */
+static int decade_stride(double l0, double l1, int length, int min_gap)
+{
+    double per = (l1 - l0) * min_gap / length;
+    return per <= 1 ? 1 : (int)ceil(per);
+}
+
+static bool on_stride(int e, int stride)
+{
+    return ((e % stride) + stride) % stride == 0;
+}
+
 static void axes(Image *im, const Axes *a)
 {
     const Rgb grid = {225, 225, 225}, ink = {0, 0, 0};
     char label[32];
+    int sx = decade_stride(a->lx0, a->lx1, RIGHT - LEFT, 48);
+    int sy = decade_stride(a->ly0, a->ly1, BOTTOM - TOP, 14);
     for (int e = (int)ceil(a->lx0); e <= (int)floor(a->lx1); e++) {
+        if (!on_stride(e, sx))
+            continue;
         int x = to_x(a, pow(10, e));
         line(im, x, TOP, x, BOTTOM, 0, grid, false);
         snprintf(label, sizeof label, "%g", pow(10, e));
         draw_text(im, x - text_width(label) / 2, BOTTOM + 6, label, ink);
     }
     for (int e = (int)ceil(a->ly0); e <= (int)floor(a->ly1); e++) {
+        if (!on_stride(e, sy))
+            continue;
         int y = to_y(a, pow(10, e));
         line(im, LEFT, y, RIGHT, y, 0, grid, false);
         snprintf(label, sizeof label, "1e%d", e);
@@ -76,6 +96,13 @@ static void axes(Image *im, const Axes *a)
     draw_text(im, 8, TOP - 24, "depth step: smallest difference in d the buffer tells apart",
               ink);
     draw_text(im, 8, TOP - 12, "(world units, log scale)", ink);
+}
+
+/* A step the log axis can show: finite and above 0. Near 1e-200 a step
+ * underflows to 0, whose log10 is -inf: such a point is left out. */
+static bool plottable(double step)
+{
+    return isfinite(step) && step > 0;
 }
 
 bool precision_plot(const char *path, double near, double far, Error *err)
@@ -91,11 +118,15 @@ bool precision_plot(const char *path, double near, double far, Error *err)
             DepthSetup s = depth_setup((DepthFormat)f, (DepthMapping)m, near, far);
             for (int x = LEFT; x <= RIGHT; x++) {
                 double d = pow(10, a.lx0 + (a.lx1 - a.lx0) * (x - LEFT) / (RIGHT - LEFT));
-                double ly = log10(depth_step(&s, d));
-                a.ly0 = fmin(a.ly0, floor(ly));
-                a.ly1 = fmax(a.ly1, ceil(ly));
+                double step = depth_step(&s, d);
+                if (!plottable(step))
+                    continue;
+                a.ly0 = fmin(a.ly0, floor(log10(step)));
+                a.ly1 = fmax(a.ly1, ceil(log10(step)));
             }
         }
+    if (!(a.ly0 < a.ly1)) /* no point to show: one decade, 0.1 to 1 */
+        a.ly0 = -1, a.ly1 = 0;
     Image im;
     if (!image_init(&im, PICTURE_W, PICTURE_H, err))
         return false;
@@ -120,7 +151,12 @@ bool precision_plot(const char *path, double near, double far, Error *err)
                 int px = -1, py = 0;
                 for (int x = LEFT; x <= RIGHT; x++) {
                     double d = pow(10, a.lx0 + (a.lx1 - a.lx0) * (x - LEFT) / (RIGHT - LEFT));
-                    int y = to_y(&a, depth_step(&s, d));
+                    double step = depth_step(&s, d);
+                    if (!plottable(step)) { /* a gap in the curve */
+                        px = -1;
+                        continue;
+                    }
+                    int y = to_y(&a, step);
                     if (px >= 0 && (m == STANDARD || (x / 8) % 2 == 0))
                         line(&im, px, py, x, y, WIDTH[f], c, false);
                     px = x, py = y;
