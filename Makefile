@@ -251,7 +251,8 @@ gpu-check: $(GPU_REF) $(BINS)
 # Their flags go in MODE_CFLAGS, with the required ones: a CFLAGS or OPT of
 # the command line does not remove them.
 
-SANITIZE_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+SANITIZE_FLAGS := -fsanitize=address,undefined -fsanitize=float-cast-overflow \
+                  -fno-sanitize-recover=all -fno-omit-frame-pointer
 SANITIZE_ENV   := ASAN_OPTIONS=exitcode=86:detect_leaks=1 \
                   UBSAN_OPTIONS=exitcode=86:print_stacktrace=1
 

@@ -180,6 +180,7 @@ static void sanitize_keeps_them_and_its_own(void **state)
     Command c = command_of("CFLAGS='" UNDOING "' sanitize", compile);
     expect_required_last(&c, "make sanitize CFLAGS=...", UNDOING);
     expect_word(&c, "make sanitize CFLAGS=...", "-fsanitize=address,undefined");
+    expect_word(&c, "make sanitize CFLAGS=...", "-fsanitize=float-cast-overflow");
     command_free(&c);
 
     const char *link[] = {" -o build/sanitize/bin/02_zbuffer", NULL};
