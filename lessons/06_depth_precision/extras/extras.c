@@ -54,7 +54,9 @@ DepthSetup depth_chosen(const Run *run)
     const char *f = run->opt.extra[FLAG_FORMAT], *m = run->opt.extra[FLAG_MAPPING];
     int format = f ? find_name(f, FORMAT_NAMES, 3) : UNORM24;
     int mapping = m ? find_name(m, MAPPING_NAMES, 2) : STANDARD;
-    double far = run->opt.far >= FAR_AT_INFINITY ? INFINITY : run->opt.far;
+    /* --far inf, which only the reversed mapping takes, stands as FAR_AT_INFINITY
+     * in clip space; a finite far that large is finite in the standard one. */
+    double far = mapping == REVERSED && run->opt.far >= FAR_AT_INFINITY ? INFINITY : run->opt.far;
     return depth_setup((DepthFormat)format, (DepthMapping)mapping, run->opt.near, far);
 }
 

@@ -74,7 +74,9 @@ DepthSetup depth_chosen(const Run *run)
     const char *const *x = run->opt.extra;
     int format = x[FLAG_FORMAT] ? find_name(x[FLAG_FORMAT], FORMAT_NAMES, 3) : UNORM24;
     int mapping = x[FLAG_MAPPING] ? find_name(x[FLAG_MAPPING], MAPPING_NAMES, 2) : STANDARD;
-    double far = run->opt.far >= FAR_AT_INFINITY ? INFINITY : run->opt.far;
+    /* --far inf, which only the reversed mapping takes, stands as FAR_AT_INFINITY
+     * in clip space; a finite far that large is finite in the standard one. */
+    double far = mapping == REVERSED && run->opt.far >= FAR_AT_INFINITY ? INFINITY : run->opt.far;
     DepthSetup s = depth_setup((DepthFormat)format, (DepthMapping)mapping, run->opt.near, far);
     Error ignored; /* choose() has checked both flags */
     if (x[FLAG_OFFSET])
