@@ -502,28 +502,38 @@ static bool check_stdout(Parser *p)
  * picture --steps DIR may write (DIR/step_NNNN.png, DIR/step_NNNN_depth.png). */
 static bool check_paths(Parser *p)
 {
-    enum { FIRST_OUTPUT = 2, DIFF = 7, PATH_COUNT = 8 };
+    enum { FIRST_OUTPUT = 2, DIFF = 7, SHARED_PATHS = 8, PATH_MAX_COUNT = 8 + CLI_MAX_EXTRA };
     const Options *o = p->opt;
     if (!check_stdout(p))
         return false;
     char diff[PATH_TEXT_MAX];
     bool has_diff = o->compare && o->out && compare_diff_path(o->out, diff, sizeof diff);
-    const char *name[PATH_COUNT] = {"--obj", "--compare", "--out", "--depth-out",
-                                    "--overdraw-out", "--id-out", "--world-out",
-                                    "the diff picture of --out"};
-    const char *path[PATH_COUNT] = {o->obj, o->compare, o->out, o->depth_out, o->overdraw_out,
-                                    o->id_out, o->world_out, has_diff ? diff : NULL};
+    const char *name[PATH_MAX_COUNT] = {"--obj", "--compare", "--out", "--depth-out",
+                                        "--overdraw-out", "--id-out", "--world-out",
+                                        "the diff picture of --out"};
+    const char *path[PATH_MAX_COUNT] = {o->obj, o->compare, o->out, o->depth_out,
+                                        o->overdraw_out, o->id_out, o->world_out,
+                                        has_diff ? diff : NULL};
+    int count = SHARED_PATHS;
+    for (int i = 0; i < extra_count(p->spec); i++)
+        if (p->spec->extra[i].output && o->extra[i]) {
+            if (is_stdout_name(o->extra[i]))
+                return error_set(p->err, "%s: '-' (standard output) is for --out only; name "
+                                         "a file", p->spec->extra[i].flag);
+            name[count] = p->spec->extra[i].flag;
+            path[count++] = o->extra[i];
+        }
     if (is_stdout_name(o->out))
         path[FIRST_OUTPUT] = NULL;
-    for (int j = FIRST_OUTPUT; j < PATH_COUNT; j++)
+    for (int j = FIRST_OUTPUT; j < count; j++)
         for (int i = 0; i < j; i++)
             if (path[i] && path[j] && same_file(path[i], path[j])) {
-                if (j == DIFF)
+                if (j == DIFF || i == DIFF)
                     return error_set(p->err, "%s names %s, where the diff picture of --out goes",
-                                     name[i], path[j]);
+                                     name[j == DIFF ? i : j], path[j]);
                 return error_set(p->err, "%s and %s both name %s", name[i], name[j], path[j]);
             }
-    for (int i = 0; o->steps_dir && i < PATH_COUNT; i++) {
+    for (int i = 0; o->steps_dir && i < count; i++) {
         if (!path[i])
             continue;
         if (same_file(path[i], o->steps_dir))
@@ -576,7 +586,8 @@ static int read_argument(Parser *p)
     int i = extra_flag_index(spec, arg);
     if (i >= 0) {
         const LessonFlag *f = &spec->extra[i];
-        if (!take_flag(p, f->flag, &p->extra_seen[i], f->metavar != NULL, &value))
+        if (!take_flag(p, f->flag, &p->extra_seen[i], f->metavar != NULL, &value) ||
+            (f->output && !set_path(f->flag, value, "file", &value, p->err)))
             return EXIT_USAGE;
         p->opt->extra[i] = value; /* "" for a switch */
         return CLI_CONTINUE;

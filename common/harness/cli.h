@@ -44,11 +44,15 @@ enum {
     CLI_ALL_3D = 0x7ff
 };
 
-/* A flag of one lesson's own, e.g. {"--painter", NULL, "draw back to front, no depth buffer"}. */
+/* A flag of one lesson's own, e.g. {"--painter", NULL, "draw back to front, no depth buffer"}.
+ * An output ({"--colour-out", "FILE.png", "...", .output = true}) is checked as
+ * the shared ones are, before anything is drawn: a name that is not empty nor
+ * "-", and no other output or input of the run under any spelling. */
 typedef struct {
     const char *flag;
     const char *metavar; /* NULL for a switch; the value's name otherwise */
     const char *help;
+    bool output;         /* its value names a file the run writes */
 } LessonFlag;
 
 typedef struct {

@@ -10,36 +10,6 @@
 
 static const Rgb NAIVE_MARK = {255, 0, 255}; /* magenta */
 
-static bool same_path(const char *a, const char *b)
-{
-    return a && b && !is_stdout_name(a) && same_file(a, b);
-}
-
-bool compare_flag_path_ok(const Options *opt, const char *flag, const char *path, Error *err)
-{
-    const char *name[] = {"--obj", "--compare", "--out", "--depth-out", "--overdraw-out",
-                          "--id-out", "--world-out"};
-    const char *other[] = {opt->obj, opt->compare, opt->out, opt->depth_out, opt->overdraw_out,
-                           opt->id_out, opt->world_out};
-    for (size_t i = 0; i < sizeof name / sizeof name[0]; i++)
-        if (same_path(other[i], path))
-            return error_set(err, "%s and %s both name %s", name[i], flag, path);
-    char diff[PATH_TEXT_MAX];
-    if (opt->compare && opt->out && compare_diff_path(opt->out, diff, sizeof diff) &&
-        same_path(diff, path))
-        return error_set(err, "%s names %s, where the diff picture of --out goes", flag, path);
-    if (is_stdout_name(path))
-        return error_set(err, "%s: '-' (standard output) is for --out only; name a file", flag);
-    if (opt->steps_dir && (same_path(opt->steps_dir, path) || is_step_picture(path, opt->steps_dir)))
-        return error_set(err, "%s names %s, where --steps writes its pictures", flag, path);
-    return true;
-}
-
-bool compare_naive_path_ok(const Options *opt, const char *path, Error *err)
-{
-    return compare_flag_path_ok(opt, "--compare-naive", path, err);
-}
-
 static bool draw_with(Render *r, const Rasterizer *rz, Target *t, Error *err)
 {
     return render_target_init(t, rz, r->camera.width, r->camera.height, err) &&

@@ -14,14 +14,6 @@
 
 #include "render.h"
 
-
-/* The picture may not replace an input or another output (--obj, --compare,
- * --out, --depth-out, --overdraw-out, --id-out, the diff picture of --compare): false
- * with err set when path names one of them, a usage error. */
-bool compare_naive_path_ok(const Options *opt, const char *path, Error *err);
-/* The same for the picture of another flag (flag: "--compare-drop"). */
-bool compare_flag_path_ok(const Options *opt, const char *flag, const char *path, Error *err);
-
 /* Draws r with both rasterizers, writes the picture to path (colours as opt->shade
  * says) and counts the marked pixels into *differing. r's face counts are
  * left as they were, so that the summary speaks of the main render only.

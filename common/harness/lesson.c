@@ -8,20 +8,12 @@
 #include "compare.h"
 #include "file.h"
 
-void run_add_output(Run *run, const char *flag, const char *path)
-{
-    if (path && run->n_extra_out < RUN_EXTRA_OUTPUTS) {
-        run->extra_out_flag[run->n_extra_out] = flag;
-        run->extra_out[run->n_extra_out++] = path;
-    }
-}
-
 /* Before anything is drawn: no output may replace a .mtl file the OBJ read
  * (known only once it is loaded: a usage error, as for --obj itself), and
  * every output must be writable (a failure while running). */
 static int check_outputs(Run *run)
 {
-    enum { SHARED = 6, MAX = SHARED + RUN_EXTRA_OUTPUTS };
+    enum { SHARED = 6, MAX = SHARED + CLI_MAX_EXTRA };
     const Options *o = &run->opt;
     char diff[PATH_TEXT_MAX];
     bool has_diff = o->compare && o->out && !is_stdout_name(o->out) &&
@@ -31,10 +23,12 @@ static int check_outputs(Run *run)
     const char *path[MAX] = {o->out, o->depth_out, o->overdraw_out, o->id_out, o->world_out,
                              has_diff ? diff : NULL};
     int n = SHARED;
-    for (int i = 0; i < run->n_extra_out; i++, n++) {
-        name[n] = run->extra_out_flag[i];
-        path[n] = run->extra_out[i];
-    }
+    const Extras *x = run->lesson->extras; /* and the lesson's own outputs */
+    for (int i = 0; x && i < x->n_flags && i < CLI_MAX_EXTRA; i++)
+        if (x->flags[i].output && o->extra[i]) {
+            name[n] = x->flags[i].flag;
+            path[n++] = o->extra[i];
+        }
     const Mesh *m = &run->render.mesh;
     for (int k = 0; k < m->nlibraries; k++) {
         const char *lib = m->libraries[k];

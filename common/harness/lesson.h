@@ -16,7 +16,6 @@
 #include "render.h"
 
 #define RUN_GO (-1)          /* run_load: go on and draw */
-#define RUN_EXTRA_OUTPUTS 4 /* outputs extras may add (run_add_output) */
 
 typedef struct Run Run;
 
@@ -47,7 +46,6 @@ struct Run {
     bool (*after_write)(Run *run, Error *err); /* an extra's output, or NULL */
     char note[2048];                           /* extras' lines under the summary */
     char default_out[64];                      /* "out/<program>.png" */
-    const char *extra_out[RUN_EXTRA_OUTPUTS], *extra_out_flag[RUN_EXTRA_OUTPUTS]; int n_extra_out;
     Error err;
     int status; /* RUN_GO until run_report, or a failure, gives the exit status */
 };
@@ -57,7 +55,6 @@ bool run_draw(Run *run);
 bool run_write(Run *run);
 bool run_report(Run *run);
 int run_end(Run *run);
-void run_add_output(Run *run, const char *flag, const char *path); /* an extra's output */
 void run_note(Run *run, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 #endif

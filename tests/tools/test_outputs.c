@@ -2,7 +2,8 @@
  * "Outputs"), run end to end against the lessons:
  *
  *   - two outputs, or an output and an input (OBJ, .mtl, segments, --compare
- *     reference), that are one file under two names are refused, status 2;
+ *     reference), that are one file under two names are refused, status 2,
+ *     a lesson's own outputs (--colour-out, --hiz-out, ...) as the shared ones;
  *   - a failed output leaves no output of the run new or changed;
  *   - SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGUSR1 and SIGABRT during a
  *     large write remove the temporary files, status 128 + the signal; a
@@ -136,6 +137,29 @@ static void outputs_and_inputs_are_compared_by_identity(void **state)
     free(now);
     assert_false(file_exists(a.path));
     assert_false(file_exists(steps.path));
+
+    /* A lesson's own outputs, checked as the shared ones: against each other,
+     * the shared ones and the inputs, by any spelling; empty or "-" refused. */
+    const char *own_two[] = {"--colour-out", a.path, "--shade-count-out", dot_a.path, NULL};
+    expect_refused("08_early_z", own_two, 2, "--colour-out and --shade-count-out both name "
+                   "%s/./a.png", dir);
+    const char *own_out[] = {"--out", a.path, "--hiz-out", up_a.path, NULL};
+    expect_refused("09_hierarchical_z", own_out, 2, "--out and --hiz-out both name "
+                   "%s/new/../a.png", dir);
+    const char *own_empty[] = {"--precision-plot", "", NULL};
+    expect_refused("06_depth_precision", own_empty, 2, "--precision-plot: the file name is empty",
+                   dir);
+    const char *own_stdout[] = {"--colour-out", "-", NULL};
+    expect_refused("09_hierarchical_z", own_stdout, 2, "--colour-out: '-' (standard output) is "
+                   "for --out only; name a file", dir);
+    const char *own_mtl[] = {"--obj", obj.path, "--out", a.path, "--compare-drop", mtl.path,
+                             NULL};
+    snprintf(want, sizeof want, "--compare-drop names %s, a material library that %s reads",
+             mtl.path, obj.path);
+    expect_run_refused("05_clipping", own_mtl, 2, want, a.path);
+    now = read_text(mtl.path);
+    assert_string_equal(now, "newmtl red\nKd 1 0 0\n");
+    free(now);
 }
 
 /* ---- 2. all or nothing ---- */

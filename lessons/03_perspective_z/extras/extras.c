@@ -14,7 +14,8 @@ static const LessonFlag FLAGS[FLAG_COUNT] = {
     [FLAG_DEPTH_INTERP] = {"--depth-interp", "RULE",
                            "perspective (1/d linear, the default) or naive (d linear, lesson 02)"},
     [FLAG_COMPARE_NAIVE] = {"--compare-naive", "FILE.png",
-                            "also write where the naive rule shows another face (magenta)"},
+                            "also write where the naive rule shows another face (magenta)",
+                            .output = true},
     [FLAG_BUG] = {"--bug", "NAME", "make a classic mistake: negated-w"},
 };
 
@@ -54,11 +55,9 @@ static bool choose(Run *run, Error *err)
     } else if (bug) {
         return error_set(err, "--bug: '%s' is not one of negated-w", bug);
     }
-    if (compare) {
+    if (compare)
         run->after_write = write_compare_naive;
-        run_add_output(run, "--compare-naive", compare);
-    }
-    return !compare || compare_naive_path_ok(&run->opt, compare, err);
+    return true;
 }
 
 const Extras EXTRAS = {.flags = FLAGS, .n_flags = FLAG_COUNT, .choose = choose};

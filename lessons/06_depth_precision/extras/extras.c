@@ -17,7 +17,8 @@ static const LessonFlag FLAGS[FLAG_COUNT] = {
     [FLAG_MAPPING] = {"--depth-mapping", "M", "standard (the default: 0 at near, 1 at far) or "
                                               "reversed (1 at near, 0 at far; takes --far inf)"},
     [FLAG_PLOT] = {"--precision-plot", "FILE.png",
-                   "also draw the depth step against distance, every format and mapping"},
+                   "also draw the depth step against distance, every format and mapping",
+                   .output = true},
 };
 
 static const char *const FORMAT_NAMES[] = {[UNORM16] = "unorm16", [UNORM24] = "unorm24",
@@ -91,7 +92,6 @@ static bool after_write(Run *run, Error *err)
 static bool choose(Run *run, Error *err)
 {
     const char *f = run->opt.extra[FLAG_FORMAT], *m = run->opt.extra[FLAG_MAPPING];
-    const char *plot = run->opt.extra[FLAG_PLOT];
     if (f && find_name(f, FORMAT_NAMES, 3) < 0)
         return error_set(err, "--depth-format: '%s' is not one of unorm16, unorm24, float32", f);
     if (m && find_name(m, MAPPING_NAMES, 2) < 0)
@@ -106,9 +106,7 @@ static bool choose(Run *run, Error *err)
     if (reversed)
         run->rule = &REVERSED_RULE;
     run->after_write = after_write;
-    if (plot)
-        run_add_output(run, "--precision-plot", plot);
-    return !plot || compare_flag_path_ok(&run->opt, "--precision-plot", plot, err);
+    return true;
 }
 
 const Extras EXTRAS = {.flags = FLAGS, .n_flags = FLAG_COUNT, .choose = choose};
