@@ -274,12 +274,44 @@ static void release(AtomicFile *f)
     f->tmp_path = NULL;
 }
 
+/* A pipe that output_check opened stays open until its output is written:
+ * closed in between, its reader would see the end of its input and go. */
+#define HELD_PIPES 8
+typedef struct { dev_t dev; ino_t ino; int fd; } HeldPipe;
+static HeldPipe held_pipe[HELD_PIPES];
+static int held_pipes;
+
+static void hold_pipe(const struct stat *st, int fd)
+{
+    if (held_pipes < HELD_PIPES)
+        held_pipe[held_pipes++] = (HeldPipe){st->st_dev, st->st_ino, fd};
+    else
+        close(fd);
+}
+
+/* The descriptor output_check left open for the pipe at path, or -1. */
+static int held_pipe_of(const char *path)
+{
+    struct stat st;
+    if (stat(path, &st) != 0 || !S_ISFIFO(st.st_mode))
+        return -1;
+    for (int i = 0; i < held_pipes; i++)
+        if (held_pipe[i].dev == st.st_dev && held_pipe[i].ino == st.st_ino) {
+            int fd = held_pipe[i].fd;
+            held_pipe[i] = held_pipe[--held_pipes];
+            return fd;
+        }
+    return -1;
+}
+
 /* Devices and pipes cannot be replaced by a rename: write to them directly.
  * A pipe is opened without waiting: one that nobody reads is refused (ENXIO)
  * rather than waited on for ever. */
 static bool open_direct(AtomicFile *f, const char *path, Error *err)
 {
-    int fd = open(path, O_WRONLY | O_NONBLOCK);
+    int fd = held_pipe_of(path);
+    if (fd < 0)
+        fd = open(path, O_WRONLY | O_NONBLOCK);
     if (fd < 0) {
         int e = errno;
         release(f);
@@ -828,7 +860,7 @@ bool output_check(const char *path, Error *err)
             if (fd < 0)
                 return error_set(err, "cannot write %s: %s", path,
                                  errno == ENXIO ? "a pipe that nobody reads" : strerror(errno));
-            close(fd);
+            hold_pipe(&st, fd); /* open until written: its reader waits for the picture */
             return true;
         }
         if (!S_ISREG(st.st_mode))

@@ -286,6 +286,25 @@ static void a_file_size_limit_is_a_failure_with_one_line(void **state)
 
 /* ---- 4. pipes, standard output ---- */
 
+/* A pipe whose reader is there before the run gets the whole picture: the
+ * check before drawing leaves it open (closed, the reader saw its end and
+ * went, and the run then found nobody reading). */
+static void a_pipe_with_a_reader_gets_the_picture(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("outputs_fifo_reader");
+    char here[TEXT_MAX];
+    assert_non_null(getcwd(here, sizeof here));
+    const char *bin = getenv("BIN_DIR") ? getenv("BIN_DIR") : "build/bin";
+    ShellResult r = run_shell(dir, 60, "mkfifo p && { cat p >got & reader=$!; }; sleep 0.3; "
+                              "%s%s%s/05_clipping --out p >/dev/null; s=$?; wait $reader; "
+                              "echo \"status $s\"; od -An -c -N4 got",
+                              bin[0] == '/' ? "" : here, bin[0] == '/' ? "" : "/", bin);
+    if (r.status != 0 || !strstr(r.output, "status 0") || !strstr(r.output, "P   N   G"))
+        fail_msg("--out p, a pipe with a reader: wanted status 0 and a PNG read:\n%s", r.output);
+    shell_result_free(&r);
+}
+
 static void pipes_are_refused_without_waiting(void **state)
 {
     (void)state;
@@ -470,6 +489,7 @@ int main(void)
         cmocka_unit_test(failed_output_leaves_no_output_of_the_run),
         cmocka_unit_test(signal_during_a_large_write_removes_the_temporary_files),
         cmocka_unit_test(a_file_size_limit_is_a_failure_with_one_line),
+        cmocka_unit_test(a_pipe_with_a_reader_gets_the_picture),
         cmocka_unit_test(pipes_are_refused_without_waiting),
         cmocka_unit_test(out_dash_writes_the_png_to_standard_output),
         cmocka_unit_test(lost_standard_output_is_a_failure),
