@@ -41,12 +41,17 @@ static bool check_orientation(Vec3 eye, Vec3 target, Vec3 up, Error *err)
 {
     Vec3 dir = vec3_sub(target, eye);
     double dir_len = vec3_length(dir), up_len = vec3_length(up);
-    if (dir_len == 0)
+    /* A length can underflow to 0 (1e-300 squared) where the vector is not 0. */
+    if (eye.x == target.x && eye.y == target.y && eye.z == target.z)
         return error_set(err, "--eye and --target are the same point");
+    if (dir_len == 0)
+        return error_set(err, "--eye and --target are too close together to give a direction");
     if (!isfinite(dir_len))
         return error_set(err, "--eye and --target are too far apart");
-    if (up_len == 0)
+    if (up.x == 0 && up.y == 0 && up.z == 0)
         return error_set(err, "--up is the zero vector");
+    if (up_len == 0)
+        return error_set(err, "--up is too short to give a direction");
     if (!isfinite(up_len))
         return error_set(err, "--up is too long");
     /* |dir x up| = |dir| |up| sin(angle) */

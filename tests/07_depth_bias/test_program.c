@@ -228,6 +228,14 @@ static void bad_command_lines_are_refused_with_status_2(void **state)
     const char *three[] = {"--polygon-offset", "1,2,3", "--out", out.path, NULL};
     expect_run_refused(PROGRAM, three, 2,
                        "--polygon-offset (UNITS): '2,3' is not a finite number", out.path);
+    /* A number of 70 digits is one number: a finite one, taken. */
+    const char *digits70 = "1111111111111111111111111111111111111111111111111111111111111111111111";
+    char long_offset[96];
+    snprintf(long_offset, sizeof long_offset, "%s,1", digits70);
+    const char *taken[] = {"--polygon-offset", long_offset, "--width", "16", "--height", "12",
+                           "--out", out.path, NULL};
+    free(run_ok(PROGRAM, taken));
+    remove(out.path);
     const char *word[] = {"--polygon-offset", "a,1", "--out", out.path, NULL};
     expect_run_refused(PROGRAM, word, 2,
                        "--polygon-offset (FACTOR): 'a' is not a finite number", out.path);

@@ -96,6 +96,10 @@ static const BadLine BAD_LINES[] = {
     {ALL_3D, {"--eye", "0,0,5", "--target", "0,0,0", "--up", "0,0,1"}, 2,
      "--up is parallel to the view direction from --eye to --target"},
     {ALL_3D, {"--up", "0,0,0"}, 2, "--up is the zero vector"},
+    /* a length that underflows is not a zero vector */
+    {ALL_3D, {"--eye", "1e-300,0,0", "--target", "0,0,0"}, 2,
+     "--eye and --target are too close together to give a direction"},
+    {ALL_3D, {"--up", "0,1e-300,0"}, 2, "--up is too short to give a direction"},
     {ALL_3D, {"--eye", "1e300,0,0", "--target", "0,0,0"}, 2,
      "--eye and --target are too far apart"},
     /* scenes and shading */

@@ -4,6 +4,7 @@
 
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
 
@@ -72,14 +73,16 @@ static int find_name(const char *name, const char *const *names, int n)
 static bool parse_offset(const char *s, double *factor, double *units, Error *err)
 {
     const char *comma = s ? strchr(s, ',') : NULL;
-    char first[64];
-    if (!comma || (size_t)(comma - s) >= sizeof first)
+    if (!comma)
         return error_set(err, "--polygon-offset: '%.40s' is not two numbers FACTOR,UNITS",
                          s ? s : "");
-    memcpy(first, s, (size_t)(comma - s));
-    first[comma - s] = '\0';
-    return parse_double("--polygon-offset (FACTOR)", first, factor, err) &&
-           parse_double("--polygon-offset (UNITS)", comma + 1, units, err);
+    char *first = strndup(s, (size_t)(comma - s)); /* a number of any length */
+    if (!first)
+        return error_set(err, "--polygon-offset: out of memory");
+    bool ok = parse_double("--polygon-offset (FACTOR)", first, factor, err) &&
+              parse_double("--polygon-offset (UNITS)", comma + 1, units, err);
+    free(first);
+    return ok;
 }
 
 static int cores(void)
