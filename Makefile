@@ -241,6 +241,7 @@ gpu-check: $(GPU_REF) $(BINS)
 #
 #   make sanitize          everything rebuilt in build/sanitize with AddressSanitizer
 #                          and UndefinedBehaviorSanitizer, then make test and make run
+#   make tsan              lesson 10's tests under ThreadSanitizer
 #   make fuzz SECONDS=60   each libFuzzer target of tests/fuzz/ for SECONDS seconds,
 #                          one after the other (needs clang); FUZZ=obj picks targets
 #   make valgrind          make run under valgrind memcheck: no error, no leak
@@ -256,11 +257,18 @@ SANITIZE_FLAGS := -fsanitize=address,undefined -fsanitize=float-cast-overflow \
 SANITIZE_ENV   := ASAN_OPTIONS=exitcode=86:detect_leaks=1 \
                   UBSAN_OPTIONS=exitcode=86:print_stacktrace=1
 
-.PHONY: sanitize fuzz fuzz-build valgrind
+.PHONY: sanitize tsan fuzz fuzz-build valgrind
 
 sanitize:
 	@$(SANITIZE_ENV) $(MAKE) --no-print-directory BUILD=build/sanitize \
 	    MODE_CFLAGS="$(SANITIZE_FLAGS)" test run
+
+# make tsan: lesson 10, the one lesson with threads, and its tests, built in
+# build/tsan with ThreadSanitizer: a data race ends the run with status 86.
+TSAN_FLAGS := -fsanitize=thread -fno-omit-frame-pointer
+tsan:
+	@TSAN_OPTIONS=exitcode=86:halt_on_error=1 $(MAKE) --no-print-directory BUILD=build/tsan \
+	    MODE_CFLAGS="$(TSAN_FLAGS)" test LESSON=10
 
 # A target is tests/fuzz/fuzz_<name>.c. When <name> is a lesson's directory it
 # links that lesson's objects but main.c: one binary per lesson, as lessons

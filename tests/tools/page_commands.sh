@@ -27,7 +27,7 @@
 #
 # Commands that take minutes are not run but dry-run with make -n (the target
 # exists and make knows how to build what it needs): make test, make grade and
-# make update-expected without TEST=, make bench, sanitize, fuzz, valgrind and
+# make update-expected without TEST=, make bench, sanitize, tsan, fuzz, valgrind and
 # compile_commands.json, and the programs of build/bench/ (made by make bench).
 #
 # A command that only reads the build and writes nothing in the tree (the
@@ -171,10 +171,11 @@ matches() { # expected-file actual-file
         }' "$1" "$2"
 }
 
-# make test, grade, update-expected without TEST=, and the long targets: make -n.
+# make test, grade, update-expected without TEST=, and the long targets
+# (bench, sanitize, tsan, fuzz, valgrind): make -n.
 dry_run_of() { # command -> the make -n line to run instead, or nothing
     case $1 in
-        make*bench*|make*sanitize*|make*fuzz*|make*valgrind*|make*compile_commands.json*)
+        make*bench*|make*sanitize*|make*tsan*|make*fuzz*|make*valgrind*|make*compile_commands.json*)
             echo "make -n ${1#make }" ;;
         make\ grade*)
             echo "make -n ${1#make }" ;;
