@@ -56,9 +56,12 @@ static const char *const LESSONS[] = {"03_perspective_z", "04_scanline_inverse_z
 static int32_t face_of(const char *program, const char *obj, const char *dir, int x, int y,
                        const char *flag, const char *value)
 {
-    Path id = in_dir(dir, "id.png");
+    Path id = in_dir(dir, "id.png"), picture = in_dir(dir, "picture.png");
     const char *args[] = {"--obj", obj, CAMERA8, "--id-out", id.path, flag, value, NULL};
-    char *out = strcmp(program, GPU) == 0 ? NULL : run_ok(program, args);
+    /* A lesson's picture goes into dir too, not over the reader's out/. */
+    const char *largs[] = {"--obj", obj, CAMERA8, "--id-out", id.path, "--out", picture.path,
+                           flag, value, NULL};
+    char *out = strcmp(program, GPU) == 0 ? NULL : run_ok(program, largs);
     if (!out) {
         RunResult r = run_tool(GPU, args);
         if (r.status != 0)
