@@ -110,10 +110,16 @@ bool run_draw(Run *run)
     return ok || fail(run);
 }
 
+/* The shared outputs say "wrote" themselves (render_write); a lesson's own
+ * are listed under the summary, each once its extra has written it. */
 bool run_write(Run *run)
 {
     bool ok = render_write(&run->render, &run->target, run->rz, &run->opt, &run->err) &&
               (!run->after_write || run->after_write(run, &run->err));
+    const Extras *x = run->lesson->extras;
+    for (int i = 0; ok && x && i < x->n_flags && i < CLI_MAX_EXTRA; i++)
+        if (x->flags[i].output && run->opt.extra[i])
+            run_note(run, "  wrote %s", run->opt.extra[i]);
     return ok || fail(run);
 }
 

@@ -162,6 +162,29 @@ static void outputs_and_inputs_are_compared_by_identity(void **state)
     free(now);
 }
 
+/* Every output a run writes is listed under its summary, a lesson's own too. */
+static void every_output_is_listed_in_the_summary(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("outputs_listed");
+    Path out = in_dir(dir, "out.png"), colour = in_dir(dir, "colour.png"),
+         heat = in_dir(dir, "heat.png"), hiz = in_dir(dir, "hiz.png"),
+         plot = in_dir(dir, "plot.png");
+    struct { const char *lesson, *flag; const Path *path; } runs[] = {
+        {"08_early_z", "--colour-out", &colour}, {"08_early_z", "--shade-count-out", &heat},
+        {"09_hierarchical_z", "--hiz-out", &hiz}, {"06_depth_precision", "--precision-plot", &plot},
+    };
+    for (size_t k = 0; k < sizeof runs / sizeof runs[0]; k++) {
+        const char *args[] = {"--width", "40", "--height", "30", "--out", out.path,
+                              runs[k].flag, runs[k].path->path, NULL};
+        char *text = run_ok(runs[k].lesson, args);
+        char line[TEXT_MAX];
+        snprintf(line, sizeof line, "  wrote %s\n", runs[k].path->path);
+        expect_line(text, line);
+        free(text);
+    }
+}
+
 /* ---- 2. all or nothing ---- */
 
 static void failed_output_leaves_no_output_of_the_run(void **state)
@@ -486,6 +509,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(outputs_and_inputs_are_compared_by_identity),
+        cmocka_unit_test(every_output_is_listed_in_the_summary),
         cmocka_unit_test(failed_output_leaves_no_output_of_the_run),
         cmocka_unit_test(signal_during_a_large_write_removes_the_temporary_files),
         cmocka_unit_test(a_file_size_limit_is_a_failure_with_one_line),

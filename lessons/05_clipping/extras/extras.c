@@ -28,8 +28,7 @@ static bool write_compare_drop(Run *run, Error *err)
     if (!compare_with_naive(&run->render, &run->opt, &CLIPPING_ZBUFFER, DROP_RULE, path,
                             &differing, err))
         return false;
-    run_note(run, "  lesson 04's drop rule shows another face at %ld pixels\n  wrote %s",
-             differing, path);
+    run_note(run, "  lesson 04's drop rule shows another face at %ld pixels", differing);
     return true;
 }
 

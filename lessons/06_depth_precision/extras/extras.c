@@ -83,10 +83,7 @@ static bool after_write(Run *run, Error *err)
     if (!plot)
         return true;
     const DepthSetup *s = run->target.depth_setup;
-    if (!precision_plot(plot, s->near, s->far, err))
-        return false;
-    run_note(run, "  wrote %s", plot);
-    return true;
+    return precision_plot(plot, s->near, s->far, err);
 }
 
 static bool choose(Run *run, Error *err)
