@@ -15,7 +15,9 @@
 #include "rasterizer.h"
 
 #define CLIP_MAX_IN 64            /* a face with more corners is clipped as its triangles */
-#define CLIP_MAX_OUT(n) (4 * (n)) /* each plane at most doubles the corners */
+/* A plane cuts a convex polygon into one with at most one corner more: 4 n
+ * corners are room to spare for both planes. */
+#define CLIP_MAX_OUT(n) (4 * (n))
 
 typedef enum { NEAR_PLANE, FAR_PLANE } ClipPlane;
 
