@@ -380,6 +380,20 @@ static void remove_tree(const char *path)
     }
 }
 
+const char *abs_bin_dir(void)
+{
+    static char path[4096 + 16];
+    const char *bin = env_or("BIN_DIR", "build/bin");
+    char here[4096];
+    if (bin[0] == '/')
+        snprintf(path, sizeof path, "%s", bin);
+    else if (getcwd(here, sizeof here))
+        snprintf(path, sizeof path, "%s/%s", here, bin);
+    else
+        fail_msg("getcwd failed");
+    return path;
+}
+
 const char *test_dir(const char *name)
 {
     if (name[0] == '\0' || strstr(name, "..") || name[0] == '/')

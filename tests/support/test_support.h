@@ -48,6 +48,9 @@ RunResult run_program(const char *program, const char *const *args);
 RunResult run_tool(const char *program, const char *const *args);
 void run_result_free(RunResult *r);
 
+/* $BIN_DIR (the lessons' executables) as an absolute path, for a command run
+ * in another directory (shell.h). */
+const char *abs_bin_dir(void);
 /* "$TEST_OUTPUT/tmp/<name>", created empty (removed first if it existed). */
 const char *test_dir(const char *name);
 /* A path inside a directory: static buffer rotation, valid for a few calls. */

@@ -157,11 +157,7 @@ static void a_snapshot_builds_alone_and_draws_the_lessons_pictures(void **state)
     free(links);
 
     free(shell_expect(0, snap, "make CFLAGS=-O0"));
-    const char *bin_dir = getenv("BIN_DIR") ? getenv("BIN_DIR") : "build/bin";
-    char bin[2 * PATH_LEN + 8];
-    if (snprintf(bin, sizeof bin, "%s%s%s", bin_dir[0] == '/' ? "" : here,
-                 bin_dir[0] == '/' ? "" : "/", bin_dir) >= (int)sizeof bin)
-        fail_msg("path too long: %s", bin_dir);
+    const char *bin = abs_bin_dir();
     const char *runs[] = {"", "--scene cubes --depth-format float32", "--scene inside --threads 1"};
     for (size_t i = 0; i < sizeof runs / sizeof runs[0]; i++) {
         snprintf(command, sizeof command,

@@ -26,7 +26,6 @@
 #include "shell.h"
 #include "test_support.h"
 
-#define PATH_LEN 4096
 
 static const int LIMITS_MB[] = {250, 350, 450};
 
@@ -35,12 +34,7 @@ static int runs_under_limits(const char *lesson, const char *reason)
 {
     if (getenv("ASAN_OPTIONS"))
         skip();
-    char here[PATH_LEN], bin[2 * PATH_LEN + 8];
-    if (!getcwd(here, sizeof here))
-        fail_msg("getcwd failed");
-    const char *bin_dir = getenv("BIN_DIR") ? getenv("BIN_DIR") : "build/bin";
-    snprintf(bin, sizeof bin, "%s%s%s", bin_dir[0] == '/' ? "" : here,
-             bin_dir[0] == '/' ? "" : "/", bin_dir);
+    const char *bin = abs_bin_dir();
     const char *dir = test_dir(lesson);
     int with_reason = 0;
     for (size_t i = 0; i < sizeof LIMITS_MB / sizeof LIMITS_MB[0]; i++) {

@@ -288,12 +288,9 @@ static void a_file_size_limit_is_a_failure_with_one_line(void **state)
 {
     (void)state;
     const char *dir = test_dir("outputs_fsize");
-    char here[TEXT_MAX];
-    assert_non_null(getcwd(here, sizeof here));
-    const char *bin = getenv("BIN_DIR") ? getenv("BIN_DIR") : "build/bin";
-    ShellResult r = run_shell(dir, 60, "ulimit -f 8 && exec %s%s%s/02_zbuffer --width 512 "
+    ShellResult r = run_shell(dir, 60, "ulimit -f 8 && exec %s/02_zbuffer --width 512 "
                               "--height 512 --out out.png --id-out id.png >/dev/null",
-                              bin[0] == '/' ? "" : here, bin[0] == '/' ? "" : "/", bin);
+                              abs_bin_dir());
     const char *want = "02_zbuffer: error: cannot write ";
     size_t lines = 0;
     for (const char *c = r.output; *c; c++)
@@ -316,13 +313,9 @@ static void a_pipe_with_a_reader_gets_the_picture(void **state)
 {
     (void)state;
     const char *dir = test_dir("outputs_fifo_reader");
-    char here[TEXT_MAX];
-    assert_non_null(getcwd(here, sizeof here));
-    const char *bin = getenv("BIN_DIR") ? getenv("BIN_DIR") : "build/bin";
     ShellResult r = run_shell(dir, 60, "mkfifo p && { cat p >got & reader=$!; }; sleep 0.3; "
-                              "%s%s%s/05_clipping --out p >/dev/null; s=$?; wait $reader; "
-                              "echo \"status $s\"; od -An -c -N4 got",
-                              bin[0] == '/' ? "" : here, bin[0] == '/' ? "" : "/", bin);
+                              "%s/05_clipping --out p >/dev/null; s=$?; wait $reader; "
+                              "echo \"status $s\"; od -An -c -N4 got", abs_bin_dir());
     if (r.status != 0 || !strstr(r.output, "status 0") || !strstr(r.output, "P   N   G"))
         fail_msg("--out p, a pipe with a reader: wanted status 0 and a PNG read:\n%s", r.output);
     shell_result_free(&r);
