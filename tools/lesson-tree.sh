@@ -34,7 +34,7 @@ lesson_dir() { # 07 or 07_depth_bias -> lessons/07_depth_bias
     usage "no lesson '$1' in lessons/"
 }
 
-# The rows of a lesson's README table: "<path> <owner lesson>".
+# The rows of a lesson's README table: "<link text> <owner lesson> <path there>".
 inherited() {
     [ -f "$1/README.md" ] || return 0
     awk '
