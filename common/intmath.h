@@ -6,15 +6,13 @@
 
 #include <stdint.h>
 
-/* a / b rounded towards minus infinity, b > 0. */
-static inline int64_t floor_div(int64_t a, int64_t b)
+static inline int64_t floor_div(int64_t a, int64_t b) /* a / b towards -infinity, b > 0 */
 {
     int64_t q = a / b; /* rounded towards zero */
     return (a % b != 0 && a < 0) ? q - 1 : q;
 }
 
-/* a / b rounded towards plus infinity, b > 0. */
-static inline int64_t ceil_div(int64_t a, int64_t b)
+static inline int64_t ceil_div(int64_t a, int64_t b) /* a / b towards +infinity, b > 0 */
 {
     int64_t q = a / b;
     return (a % b != 0 && a > 0) ? q + 1 : q;

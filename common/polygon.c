@@ -56,41 +56,41 @@ bool convex_on_screen(const ScreenVertex *v, int n, int subpixel_one, int *turn)
  * beyond it. False when it was not drawn (not convex on the screen, or too
  * many corners to clip here): then its triangles are drawn instead. New
  * corners get their depth with 1/d taken as linear on the screen. */
-static bool draw_clipped_polygon(Target *t, const ScreenVertex *v, int n, int face, double far,
-                                 DrawPolygonFn draw_polygon)
+static bool draw_clipped_polygon(const Primitive *p, const ScreenVertex *v, int n,
+                                 const DrawContext *ctx, DrawPolygonFn draw_polygon)
 {
-    if (guard_band_contains(v, n, t->width, t->height))
-        return draw_polygon(t, v, n, face, far);
+    if (guard_band_contains(v, n, ctx->width, ctx->height))
+        return draw_polygon(p, v, n, ctx->far);
     if (n > CLIP_MAX_CORNERS)
         return false;
     ScreenVertex clipped[GUARD_BAND_MAX_OUT(CLIP_MAX_CORNERS)];
-    int m = guard_band_clip(v, n, t->width, t->height, LINEAR_INV_D, clipped);
-    if (m < 3 || draw_polygon(t, clipped, m, face, far))
+    int m = guard_band_clip(v, n, ctx->width, ctx->height, LINEAR_INV_D, clipped);
+    if (m < 3 || draw_polygon(p, clipped, m, ctx->far))
         return true;
     /* Cut far off the screen and snapped, a polygon can come out a hair from
      * convex: draw it as a fan of triangles, as lessons 02 and 03 do. */
     for (int j = 1; j + 1 < m; j++) {
         ScreenVertex tri[3] = {clipped[0], clipped[j], clipped[j + 1]};
-        draw_polygon(t, tri, 3, face, far);
+        draw_polygon(p, tri, 3, ctx->far);
     }
     return true;
 }
 
 /* A face with a corner that is not a finite number in front of the camera
  * draws nothing. */
-void draw_face_as_polygons(Target *t, const ScreenFace *f, const DrawContext *ctx,
+void draw_face_as_polygons(const Primitive *p, const ScreenFace *f, const DrawContext *ctx,
                            DrawPolygonFn draw_polygon)
 {
     for (int i = 0; i < f->n; i++)
         if (!(isfinite(f->v[i].x) && isfinite(f->v[i].y) && isfinite(f->v[i].d) && f->v[i].d > 0))
             return; /* the pipeline drops such faces; draw nothing if one gets here */
-    if (f->convex && draw_clipped_polygon(t, f->v, f->n, f->face, ctx->far, draw_polygon))
+    if (f->convex && draw_clipped_polygon(p, f->v, f->n, ctx, draw_polygon))
         return;
     /* A non-convex face: its ear-clipped triangles, each one a convex polygon. */
     for (int k = 0; k < f->n - 2; k++) {
         ScreenVertex tri[3];
         for (int j = 0; j < 3; j++)
             tri[j] = f->v[f->tris[k].c[j]];
-        draw_clipped_polygon(t, tri, 3, f->face, ctx->far, draw_polygon);
+        draw_clipped_polygon(p, tri, 3, ctx, draw_polygon);
     }
 }

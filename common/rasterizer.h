@@ -1,8 +1,6 @@
-/* rasterizer.h: what a lesson's rasterizer is handed, and what it hands back.
- *
- * The pipeline (render.h) projects every face corner to the screen and hands
- * the lesson one ScreenFace at a time; the lesson's Rasterizer says how it
- * clears its depth buffer, draws a face, and reads a stored value back as d. */
+/* rasterizer.h: the pipeline (render.h) hands the lesson one ScreenFace at a
+ * time; the lesson's Rasterizer says how it clears its depth buffer, draws a
+ * face, and reads a stored value back as d. */
 #ifndef RASTERIZER_H
 #define RASTERIZER_H
 
@@ -24,16 +22,23 @@ typedef struct {
 
 /* What draw_face needs besides the target and the face. */
 typedef struct {
-    double near, far; /* the camera's planes: a fragment with d > far is discarded */
+    double near, far;  /* the camera's planes: a fragment with d > far is discarded */
+    int width, height; /* the viewport: the target's size, in pixels */
 } DrawContext;
 
-/* The lesson's depth buffer, in three functions. */
+/* Each lesson defines these itself. LessonState (state.h, 06 on; else NULL):
+ * what it keeps besides the target. Primitive (depth_buffer.h, 04 on): a face
+ * being drawn, as each of its fragments needs it: target, state, face, ... */
+typedef struct LessonState LessonState;
+typedef struct Primitive Primitive;
+
+/* The lesson's depth buffer, in three functions, and its state. */
 typedef struct {
-    void (*clear)(Target *t); /* every pixel: "nothing drawn yet", face NO_FACE */
-    void (*draw_face)(Target *t, const ScreenFace *f, const DrawContext *ctx);
-    double (*stored_to_depth)(const Target *t, float stored); /* as d; NULL: it holds d */
-    bool clips; /* clips itself (05): render_faces drops only faces wholly behind near */
-    void (*finish)(Target *t); /* NULL but lesson 10's: draws the faces it held back */
+    void (*clear)(Target *t, LessonState *s); /* every pixel "nothing drawn yet", face NO_FACE */
+    void (*draw_face)(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx);
+    double (*stored_to_depth)(const LessonState *s, float stored); /* as d; NULL: it holds d */
+    bool clips;         /* clips itself (05): render_faces drops only faces wholly behind near */
+    LessonState *state; /* handed to the three above */
 } Rasterizer;
 
 /* True when every corner's x, y and d is a finite number: draw_face draws

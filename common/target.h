@@ -19,8 +19,6 @@
 typedef struct {
     int width, height;
     float *depth;
-    struct DepthSetup *depth_setup; /* its format, from lesson 06 on (NULL before) */
-    struct HierarchicalZ *hiz;      /* its tile buffer, in lesson 09 on (NULL before) */
     int32_t *face;
     bool counting; /* on from target_init; off: no overdraw, stats or trace kept */
     uint32_t *overdraw;

@@ -56,7 +56,8 @@ int run_load(Run *run, const Lesson *lesson, int argc, char **argv)
 {
     memset(run, 0, sizeof *run);
     run->lesson = lesson;
-    run->rz = lesson->rasterizer;
+    run->rasterizer = *lesson->rasterizer;
+    run->rz = &run->rasterizer;
     run->rule = &lesson->depth_rule;
     snprintf(run->default_out, sizeof run->default_out, "out/%s.png", lesson->program);
     const Extras *x = lesson->extras;
@@ -132,7 +133,7 @@ bool run_report(Run *run)
     render_print_summary(stdout, run->lesson->program, &run->render, &run->target, &run->opt);
     fputs(run->note, stdout);
     if (run->lesson->report)
-        run->lesson->report(&run->target);
+        run->lesson->report(&run->target, run->rz->state);
     run->status = inspect_report(stdout, &run->inspection, &run->target, &run->err);
     if (to_stderr)
         stdout_to_stderr_end(saved);

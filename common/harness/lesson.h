@@ -1,8 +1,7 @@
 /* lesson.h: the program around a lesson of the 3-D series (02 on). A
  * lesson's main.c is its outline, one call per step:
- *
  *     run_load      the command line, the scene, the camera, the buffers
- *     rz->clear     the lesson's clear_depth
+ *     rz->clear     the lesson's clear_depth (rz->state: the lesson's own, 06 on)
  *     run_draw      every face in mesh order through the lesson's draw_face
  *     run_write     the pictures asked for (--out, --depth-out, ...)
  *     run_report    the summary, then --trace, --ascii and --compare
@@ -15,8 +14,7 @@
 #include "rasterizer.h"
 #include "render.h"
 
-#define RUN_GO (-1)          /* run_load: go on and draw */
-
+#define RUN_GO (-1) /* run_load: go on and draw */
 typedef struct Run Run;
 
 typedef struct {
@@ -31,7 +29,7 @@ typedef struct {
     const Rasterizer *rasterizer;    /* the lesson's depth buffer */
     DepthRule depth_rule;            /* its words for --trace and --ascii */
     const Extras *extras;            /* NULL when there are none */
-    void (*report)(const Target *t); /* lines of its own under the summary, or NULL */
+    void (*report)(const Target *t, const LessonState *s); /* lines under the summary, or NULL */
 } Lesson;
 
 struct Run {
@@ -40,7 +38,8 @@ struct Run {
     Render render;
     Target target;
     Inspection inspection;
-    const Rasterizer *rz;  /* the lesson's, unless an extra chose another */
+    Rasterizer rasterizer; /* the lesson's: its state set by main.c (06 on) */
+    const Rasterizer *rz;  /* &rasterizer, unless an extra chose another */
     const DepthRule *rule; /* likewise */
     bool (*draw)(Run *run, Error *err);        /* an extra's way to draw, or NULL */
     bool (*after_write)(Run *run, Error *err); /* an extra's output, or NULL */

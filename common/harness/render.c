@@ -128,7 +128,7 @@ bool render_target_init(Target *t, const Rasterizer *rz, int width, int height, 
 {
     if (!target_init(t, width, height, err))
         return false;
-    rz->clear(t);
+    rz->clear(t, rz->state);
     return true;
 }
 
@@ -169,7 +169,8 @@ bool render_face_dropped(const Render *r, int i)
 bool render_faces(Render *r, Target *t, const Rasterizer *rz, const int *order, int count,
                   FaceDrawnFn after_face, void *data, Error *err)
 {
-    DrawContext ctx = {.near = r->camera.near, .far = r->camera.far};
+    DrawContext ctx = {.near = r->camera.near, .far = r->camera.far, .width = t->width,
+                       .height = t->height};
     int n = order ? count : r->mesh.nfaces, k;
     for (k = 0; k < n; k++) {
         int i = order ? order[k] : k;
@@ -189,14 +190,12 @@ bool render_faces(Render *r, Target *t, const Rasterizer *rz, const int *order, 
         case KEEP:
             break;
         }
-        rz->draw_face(t, &f, &ctx);
+        rz->draw_face(t, rz->state, &f, &ctx);
         r->counts.faces_drawn++;
         r->counts.tris_drawn += ntris;
         if (after_face && !after_face(data, t, &f, err))
             break;
     }
-    if (rz->finish)
-        rz->finish(t);
     return k == n;
 }
 
@@ -210,7 +209,7 @@ float *render_view_depth(const Target *t, const Rasterizer *rz)
         if (t->face[i] == NO_FACE)
             d[i] = INFINITY; /* docs/conventions.md: the background is +infinity */
         else
-            d[i] = rz->stored_to_depth ? (float)rz->stored_to_depth(t, t->depth[i]) : t->depth[i];
+            d[i] = rz->stored_to_depth ? (float)rz->stored_to_depth(rz->state, t->depth[i]) : t->depth[i];
     }
     return d;
 }

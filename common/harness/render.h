@@ -75,9 +75,8 @@ void render_free(Render *r);
 
 /* Draws faces through rz->draw_face: order == NULL draws every face in mesh
  * order, otherwise order[0 .. count-1] (face indices, repeats allowed).
- * after_face (may be NULL) runs after each face that was drawn; rz->finish
- * (if any: lesson 10 holds faces back) at the end. False only when
- * after_face failed. */
+ * after_face (may be NULL) runs after each face that was drawn. False only
+ * when after_face failed. */
 bool render_faces(Render *r, Target *t, const Rasterizer *rz, const int *order, int count,
                   FaceDrawnFn after_face, void *data, Error *err);
 

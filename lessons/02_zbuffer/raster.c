@@ -11,8 +11,9 @@
 
 /* Before the first face: every pixel holds a value that the first fragment
  * to reach it always beats, whatever its depth; no face there yet. */
-void clear_depth(Target *t)
+void clear_depth(Target *t, LessonState *s)
 {
+    (void)s; /* none in this lesson (rasterizer.h) */
     size_t n = (size_t)t->width * (size_t)t->height;
     for (size_t i = 0; i < n; i++) {
         /* SOLUTION BEGIN: the value every pixel of the depth buffer starts
@@ -257,8 +258,9 @@ void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, in
 /* A face is drawn as its triangles. One reaching far off the screen is first
  * cut down to the guard band (common/guard_band.h), where fixed point holds
  * it; what is left is a convex polygon, drawn as a fan. */
-void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+void draw_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx)
 {
+    (void)s;
     if (!screen_face_is_finite(f))
         return; /* a corner that is not a number: no picture is right, so none is drawn */
     for (int k = 0; k < f->n - 2; k++) {

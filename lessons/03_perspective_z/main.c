@@ -26,7 +26,7 @@ int main(int argc, char **argv)
     int status = run_load(&run, &LESSON, argc, argv); /* load: the command line, the scene */
     if (status != RUN_GO)
         return status;
-    run.rz->clear(&run.target);                        /* clear: clear_depth */
+    run.rz->clear(&run.target, run.rz->state);         /* clear: clear_depth */
     if (run_draw(&run) &&                              /* draw: draw_face, face by face */
         run_write(&run))                               /* write: the pictures asked for */
         run_report(&run);                              /* report: the summary and the tools */

@@ -33,7 +33,7 @@ typedef struct { int x0, y0, x1, y1; } PixelBox;
 /* The weights of the three corners at a point: w0 + w1 + w2 = 1. */
 typedef struct { double w0, w1, w2; } Barycentric;
 
-void clear_depth(Target *t);
+void clear_depth(Target *t, LessonState *s); /* s: none here (rasterizer.h) */
 FixedPoint snap_to_fixed(ScreenVertex v);
 FixedPoint pixel_centre(int x, int y);
 int64_t edge_function(FixedPoint a, FixedPoint b, FixedPoint p);
@@ -46,7 +46,7 @@ bool depth_test(Target *t, size_t i, int face, float d);
 /* Corners inside the guard band (guard_band.h): draw_face sees to that. */
 void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, int face,
                    double far);
-void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
+void draw_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx);
 
 /* The lesson as the pipeline sees it: the buffer holds d, cleared to +infinity. */
 extern const Rasterizer ZBUFFER;

@@ -1,9 +1,8 @@
 /* main.c: lesson 04, the z-buffer as a scanline renderer (docs/04_scanline_inverse_z.md).
- *
- * The outline of the program. What this lesson teaches is in scanline.c:
- * clear the buffer of 1/d to 0, then fill every face scanline by scanline,
- * keeping per pixel the largest 1/d. Everything around it is common/harness/, reached
- * through lesson.h. The report ends with "front object detection". */
+ * The outline of the program. What this lesson teaches is in scanline.c and
+ * depth_buffer.c: clear the buffer of 1/d to 0, then fill every face scanline
+ * by scanline, keeping per pixel the largest 1/d. The report ends with "front
+ * object detection"; the rest is common/harness/, reached through lesson.h. */
 #include <math.h>
 #include <stdio.h>
 
@@ -11,10 +10,10 @@
 #include "scanline.h"
 
 /* What a player's step forward would run into: the buffer at the centre pixel. */
-static void print_front_object(const Target *t)
+static void print_front_object(const Target *t, const LessonState *s)
 {
     int x = t->width / 2, y = t->height / 2;
-    double d = stored_to_depth(t, t->depth[y * t->width + x]); /* the nearest surface there */
+    double d = stored_to_depth(s, t->depth[y * t->width + x]); /* the nearest surface there */
     if (isinf(d))
         printf("  front object: nothing at the screen centre (%d,%d)\n", x, y);
     else
@@ -38,7 +37,7 @@ int main(int argc, char **argv)
     int status = run_load(&run, &LESSON, argc, argv); /* load: the command line, the scene */
     if (status != RUN_GO)
         return status;
-    run.rz->clear(&run.target);                        /* clear: clear_depth */
+    run.rz->clear(&run.target, run.rz->state);         /* clear: clear_depth */
     if (run_draw(&run) &&                              /* draw: draw_face, face by face */
         run_write(&run))                               /* write: the pictures asked for */
         run_report(&run);                              /* report: the summary and the tools */

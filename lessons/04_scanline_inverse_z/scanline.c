@@ -91,11 +91,11 @@ void edge_step(Edge *e)
 /* Fills row y: the pixels whose centre x + 0.5 is in [left, right), on the
  * screen. 1/d starts at the first pixel centre and steps by a constant per
  * pixel; a fragment beyond the far plane (1/d < inv_far) is not tested. */
-void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, double inv_far)
+void draw_span(const Primitive *p, int y, const Edge *left, const Edge *right, double inv_far)
 {
     /* SOLUTION BEGIN: the span, one addition of 1/d per pixel. */
     int64_t x_first = left->x_pixel < 0 ? 0 : left->x_pixel;
-    int64_t x_stop = right->x_pixel > t->width ? t->width : right->x_pixel;
+    int64_t x_stop = right->x_pixel > p->target->width ? p->target->width : right->x_pixel;
     if (x_first >= x_stop)
         return;
 
@@ -108,14 +108,13 @@ void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, 
     /* 1/d at the first pixel centre, (x_first + 0.5) - x_left to the right of the edge. */
     double inv_d = left->inv_d + ((double)(x_first - left->x_pixel) + left_frac) * step;
 
-    size_t i = (size_t)y * (size_t)t->width + (size_t)x_first;
-    for (int64_t x = x_first; x < x_stop; x++, i++) {
+    for (int64_t x = x_first; x < x_stop; x++) {
         if (inv_d >= inv_far) /* d <= far: a fragment beyond the far plane is discarded */
-            depth_test(t, i, face, (float)inv_d);
+            fragment(p, (int)x, y, (float)inv_d);
         inv_d += step; /* one addition per pixel */
     }
     /* SOLUTION STUB
-    (void)t; (void)y; (void)left; (void)right; (void)face; (void)inv_far;
+    (void)p; (void)y; (void)left; (void)right; (void)inv_far;
     */
     /* SOLUTION END */
 }
@@ -133,11 +132,10 @@ static bool chain_next_edge(Chain *c, int y, Edge *e)
     return false;
 }
 
-/* Rows y_first .. y_stop - 1, top to bottom: each row is one span from the
- * left edge to the right edge; at a corner, the next edge of that side takes
- * over, set up fresh from its own top. */
-static void walk_edges(Target *t, Chain *left_chain, Chain *right_chain, int y_first, int y_stop,
-                       int face, double inv_far)
+/* Rows y_first .. y_stop - 1, top to bottom, one span each from the left edge
+ * to the right; at a corner the side's next edge takes over, set up afresh. */
+static void walk_edges(const Primitive *p, Chain *left_chain, Chain *right_chain, int y_first,
+                       int y_stop, double inv_far)
 {
     Edge left, right;
     if (!chain_next_edge(left_chain, y_first, &left) ||
@@ -148,7 +146,7 @@ static void walk_edges(Target *t, Chain *left_chain, Chain *right_chain, int y_f
             return;
         if (y >= right.y_end && !chain_next_edge(right_chain, y, &right))
             return;
-        draw_span(t, y, &left, &right, face, inv_far);
+        draw_span(p, y, &left, &right, inv_far);
         edge_step(&left);
         edge_step(&right);
     }
@@ -184,12 +182,10 @@ static bool corner_in_range(const ScreenVertex *v)
 
 /* A convex polygon, either winding, drawn whole. False, drawing nothing (its triangles
  * are drawn instead): not convex once snapped, a corner out of range, too many corners. */
-bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
+bool draw_polygon(const Primitive *p, const ScreenVertex *v, int n, double far)
 {
-    if (n < 3)
-        return true; /* nothing to draw */
-    if (n > POLYGON_MAX_CORNERS)
-        return false;
+    if (n < 3 || n > POLYGON_MAX_CORNERS)
+        return n < 3; /* fewer: nothing to draw; more: drawn as triangles */
     Corner c[POLYGON_MAX_CORNERS];
     for (int i = 0; i < n; i++) {
         if (!corner_in_range(&v[i]))
@@ -219,14 +215,15 @@ bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
     int64_t y_first = first_row_at_or_below(c[top].y);
     int64_t y_stop = first_row_at_or_below(c[bottom].y);
     y_first = y_first < 0 ? 0 : y_first;
-    y_stop = y_stop > t->height ? t->height : y_stop;
+    y_stop = y_stop > p->target->height ? p->target->height : y_stop;
     if (y_first < y_stop)
-        walk_edges(t, left, right, (int)y_first, (int)y_stop, face, 1.0 / far);
+        walk_edges(p, left, right, (int)y_first, (int)y_stop, 1.0 / far);
     return true;
 }
 
 /* One face: a convex face as one polygon, any other as its triangles (polygon.h). */
-void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+void draw_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx)
 {
-    draw_face_as_polygons(t, f, ctx, draw_polygon);
+    Primitive p = {.target = t, .state = s, .face = f->face};
+    draw_face_as_polygons(&p, f, ctx, draw_polygon);
 }

@@ -42,9 +42,9 @@ typedef struct {
 bool edge_setup(Edge *e, int64_t ax, int64_t ay, double inv_a, int64_t bx, int64_t by,
                 double inv_b, int y_first);               /* false: no row to walk */
 void edge_step(Edge *e);                                  /* one scanline down */
-void draw_span(Target *t, int y, const Edge *left, const Edge *right, int face, double inv_far);
+void draw_span(const Primitive *p, int y, const Edge *left, const Edge *right, double inv_far);
 /* A convex polygon drawn whole; false: drawn as its triangles instead. */
-bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far);
-void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
+bool draw_polygon(const Primitive *p, const ScreenVertex *v, int n, double far);
+void draw_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx);
 
 #endif

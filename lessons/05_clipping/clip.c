@@ -82,7 +82,7 @@ ScreenVertex clip_to_screen(Vec4 c, int width, int height)
 }
 
 /* A convex polygon in clip space: clipped, divided, and drawn by lesson 04. */
-static void draw_clipped_polygon(Target *t, const Vec4 *corners, int n, int face,
+static void draw_clipped_polygon(const Primitive *p, const Vec4 *corners, int n,
                                  const DrawContext *ctx)
 {
     Vec4 kept[CLIP_MAX_OUT(CLIP_MAX_IN)];
@@ -90,37 +90,44 @@ static void draw_clipped_polygon(Target *t, const Vec4 *corners, int n, int face
     Tri fan[CLIP_MAX_OUT(CLIP_MAX_IN)];
     int m = clip_polygon(corners, n, kept);
     for (int i = 0; i < m; i++) {
-        v[i] = clip_to_screen(kept[i], t->width, t->height);
+        v[i] = clip_to_screen(kept[i], ctx->width, ctx->height);
         fan[i] = (Tri){{0, i + 1, i + 2}};
     }
-    ScreenFace f = {.face = face, .n = m, .v = v, .tris = fan, .convex = true};
+    ScreenFace f = {.face = p->face, .n = m, .v = v, .tris = fan, .convex = true};
     if (m >= 3)
-        draw_face_as_polygons(t, &f, ctx, draw_polygon);
+        draw_face_as_polygons(p, &f, ctx, draw_polygon);
 }
 
 /* One face: as lesson 04 draws it when no plane cuts it (or it was made on
  * the screen); otherwise clipped whole if convex, else triangle by triangle. */
-void draw_clipped_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+void draw_clipped_face(const Primitive *p, const ScreenFace *f, const DrawContext *ctx)
 {
     bool cut = false;
     for (int i = 0; f->clip && i < f->n; i++)
         cut = cut || !(plane_distance(f->clip[i], NEAR_PLANE) >= 0 &&
                        plane_distance(f->clip[i], FAR_PLANE) >= 0);
     if (!cut)
-        draw_face(t, f, ctx);
+        draw_face_as_polygons(p, f, ctx, draw_polygon);
     else if (f->convex && f->n <= CLIP_MAX_IN)
-        draw_clipped_polygon(t, f->clip, f->n, f->face, ctx);
+        draw_clipped_polygon(p, f->clip, f->n, ctx);
     else
         for (int k = 0; k < f->n - 2; k++) {
             const int *c = f->tris[k].c;
             Vec4 tri[3] = {f->clip[c[0]], f->clip[c[1]], f->clip[c[2]]};
-            draw_clipped_polygon(t, tri, 3, f->face, ctx);
+            draw_clipped_polygon(p, tri, 3, ctx);
         }
 }
 
 /* The lesson's buffer (scanline.h: its clear and its stored value as d), each
  * face clipped first. */
+static void draw_face_clipped(Target *t, LessonState *s, const ScreenFace *f,
+                              const DrawContext *ctx)
+{
+    Primitive p = {.target = t, .state = s, .face = f->face};
+    draw_clipped_face(&p, f, ctx);
+}
+
 const Rasterizer CLIPPING_ZBUFFER = {
-    .clear = clear_depth, .draw_face = draw_clipped_face, .stored_to_depth = stored_to_depth,
+    .clear = clear_depth, .draw_face = draw_face_clipped, .stored_to_depth = stored_to_depth,
     .clips = true,
 };

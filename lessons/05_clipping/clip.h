@@ -27,7 +27,7 @@ Vec4 plane_crossing(Vec4 in, double d_in, Vec4 out, double d_out); /* on the pla
 int clip_to_plane(const Vec4 *in, int n, ClipPlane plane, Vec4 *out);
 int clip_polygon(const Vec4 *in, int n, Vec4 *out);              /* near, then far */
 ScreenVertex clip_to_screen(Vec4 c, int width, int height);      /* divide, viewport */
-void draw_clipped_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
+void draw_clipped_face(const Primitive *p, const ScreenFace *f, const DrawContext *ctx);
 
 /* The lesson's buffer (scanline.h), handed every face the near plane leaves something of. */
 extern const Rasterizer CLIPPING_ZBUFFER;

@@ -14,10 +14,10 @@
 #include "scanline.h"
 
 /* What a player's step forward would run into: the buffer at the centre pixel. */
-static void print_front_object(const Target *t)
+static void print_front_object(const Target *t, const LessonState *s)
 {
     int x = t->width / 2, y = t->height / 2;
-    double d = stored_to_depth(t, t->depth[y * t->width + x]); /* the nearest surface there */
+    double d = stored_to_depth(s, t->depth[y * t->width + x]); /* the nearest surface there */
     if (isinf(d))
         printf("  front object: nothing at the screen centre (%d,%d)\n", x, y);
     else
@@ -42,7 +42,7 @@ int main(int argc, char **argv)
     int status = run_load(&run, &LESSON, argc, argv); /* load: the command line, the scene */
     if (status != RUN_GO)
         return status;
-    run.rz->clear(&run.target);                        /* clear: clear_depth */
+    run.rz->clear(&run.target, run.rz->state);         /* clear: clear_depth */
     if (run_draw(&run) &&                              /* draw: clip, divide, draw_face */
         run_write(&run))                               /* write: the pictures asked for */
         run_report(&run);                              /* report: the summary and the tools */

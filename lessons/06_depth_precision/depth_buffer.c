@@ -1,12 +1,12 @@
 /* depth_buffer.c: lesson 06's depth buffer of window depth z_w, in a format
  * and a mapping, step by step (depth_format.h, docs/06_depth_precision.md). */
-#include "depth_format.h"
+#include "depth_buffer.h"
 
 #include <math.h>
 
 #include "clip.h"
 #include "guard_band.h"
-#include "scanline.h"
+#include "state.h"
 
 #define UNORM16_MAX 65535.0    /* 2^16 - 1: the code of z_w = 1 */
 #define UNORM24_MAX 16777215.0 /* 2^24 - 1 */
@@ -125,20 +125,22 @@ DepthPlane depth_plane(const DepthSetup *s, const ScreenVertex v[3])
 /* The triangle as the GPU sets it up: clipped at near and far (clip.c),
  * divided onto the screen and clipped to the guard band (guard_band.h); its
  * plane then from its first three corners (any three give the same plane). */
-static void triangle_plane(Target *t, const ScreenFace *tri)
+static DepthPlane triangle_plane(const DepthSetup *s, const ScreenFace *tri, int width,
+                                 int height)
 {
     Vec4 kept[CLIP_MAX_OUT(3)];
     ScreenVertex on[CLIP_MAX_OUT(3)], v[GUARD_BAND_MAX_OUT(CLIP_MAX_OUT(3))];
     int n = tri->clip ? clip_polygon(tri->clip, 3, kept) : 3;
     for (int k = 0; k < n; k++)
-        on[k] = tri->clip ? clip_to_screen(kept[k], t->width, t->height) : tri->v[k];
-    if (guard_band_clip(on, n, t->width, t->height, LINEAR_INV_D, v) >= 3)
-        t->depth_setup->plane = depth_plane(t->depth_setup, v);
+        on[k] = tri->clip ? clip_to_screen(kept[k], width, height) : tri->v[k];
+    DepthPlane none = {0, 0, 0};
+    return guard_band_clip(on, n, width, height, LINEAR_INV_D, v) >= 3 ? depth_plane(s, v) : none;
 }
 
 /* A face, triangle by triangle as a GPU draws it: each its own plane of z_w,
  * then drawn (clipped, divided, scanned) as lesson 05 draws a face. */
-void draw_triangles(Target *t, const ScreenFace *f, const DrawContext *ctx)
+void draw_triangles(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx,
+                    float offset)
 {
     for (int k = 0; k < f->n - 2; k++) {
         const int *c = f->tris[k].c;
@@ -150,9 +152,16 @@ void draw_triangles(Target *t, const ScreenFace *f, const DrawContext *ctx)
                 clip[j] = f->clip[c[j]];
             tri.clip = clip;
         }
-        triangle_plane(t, &tri);
-        draw_clipped_face(t, &tri, ctx);
+        Primitive p = {.target = t, .state = s, .face = f->face, .offset = offset,
+                       .plane = triangle_plane(&s->depth, &tri, ctx->width, ctx->height)};
+        draw_clipped_face(&p, &tri, ctx);
     }
+}
+
+static void draw_precise_face(Target *t, LessonState *s, const ScreenFace *f,
+                              const DrawContext *ctx)
+{
+    draw_triangles(t, s, f, ctx, 0.0f);
 }
 
 /* The far plane everywhere, nothing drawn: 1 (standard) or 0 (reversed). */
@@ -161,33 +170,40 @@ static float cleared(const DepthSetup *s)
     return encode_depth(s->format, s->mapping == REVERSED ? 0.0f : 1.0f);
 }
 
-/* The target's buffer in the format and mapping of t->depth_setup. */
-void clear_depth(Target *t)
+/* The target's buffer in the format and mapping of the lesson's state. */
+void clear_depth(Target *t, LessonState *s)
 {
     size_t n = (size_t)t->width * (size_t)t->height;
-    float value = cleared(t->depth_setup);
+    float value = cleared(&s->depth);
     for (size_t i = 0; i < n; i++) {
         t->depth[i] = value;
         t->face[i] = NO_FACE;
     }
 }
 
-/* The depth test of one fragment at pixel i = y width + x. Its z_w is the
+/* What a fragment of triangle p at pixel (x, y) stores: its z_w is the
  * triangle's plane at the pixel centre (plus the offset, lesson 07's), in
- * float32 as a GPU evaluates it, not the scanline's 1/d; then it is stored
- * in the buffer's format. */
-inline bool depth_test(Target *t, size_t i, int face, float inv_d)
+ * float32 as a GPU evaluates it, not the scanline's 1/d; in the buffer's format. */
+float fragment_depth(const Primitive *p, int x, int y)
 {
-    const DepthSetup *s = t->depth_setup;
-    float x = (float)(i % (size_t)t->width), y = (float)(i / (size_t)t->width);
-    float z_w = s->plane.a0 + s->plane.gx * x + s->plane.gy * y + s->offset;
+    float z_w = p->plane.a0 + p->plane.gx * (float)x + p->plane.gy * (float)y + p->offset;
+    return encode_depth(p->state->depth.format, z_w);
+}
+
+/* The depth test of one fragment of triangle p at pixel (x, y). */
+inline bool depth_test(const Primitive *p, int x, int y, float inv_d)
+{
+    const DepthSetup *s = &p->state->depth;
+    Target *t = p->target;
+    size_t i = (size_t)y * (size_t)t->width + (size_t)x;
+    int face = p->face;
     (void)inv_d;
-    float value = encode_depth(s->format, z_w), stored = t->depth[i];
+    float value = fragment_depth(p, x, y), stored = t->depth[i];
     /* SOLUTION BEGIN: does the fragment win pixel i? Which way is nearer
      * depends on the mapping; a tie keeps the fragment drawn first. */
     bool passed = s->mapping == REVERSED ? value > stored : value < stored;
     /* SOLUTION STUB
-    bool passed = false;
+    bool passed = false; (void)s;
     */
     /* SOLUTION END */
     target_record(t, i, face, value, stored, passed);
@@ -201,13 +217,13 @@ inline bool depth_test(Target *t, size_t i, int face, float inv_d)
 }
 
 /* A stored value back as view depth d (--depth-out, --shade depth). */
-double stored_to_depth(const Target *t, float stored)
+double stored_to_depth(const LessonState *state, float stored)
 {
-    const DepthSetup *s = t->depth_setup;
+    const DepthSetup *s = &state->depth;
     return stored == cleared(s) ? INFINITY : view_depth(s, decode_depth(s->format, stored));
 }
 
 const Rasterizer DEPTH_PRECISION_ZBUFFER = {
-    .clear = clear_depth, .draw_face = draw_triangles, .stored_to_depth = stored_to_depth,
+    .clear = clear_depth, .draw_face = draw_precise_face, .stored_to_depth = stored_to_depth,
     .clips = true,
 };

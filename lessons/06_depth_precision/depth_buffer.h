@@ -6,7 +6,11 @@
 
 #include "depth_format.h"
 
-void clear_depth(Target *t);                                 /* the far plane everywhere */
-bool depth_test(Target *t, size_t i, int face, float inv_d); /* z_w from the plane, not inv_d */
+void clear_depth(Target *t, LessonState *s);                    /* the far plane everywhere */
+float fragment_depth(const Primitive *p, int x, int y);         /* its plane's z_w, stored */
+bool depth_test(const Primitive *p, int x, int y, float inv_d); /* that against the buffer */
+
+/* The fragment step, each pixel a span covers: the depth test alone (08: and a shader). */
+static inline void fragment(const Primitive *p, int x, int y, float v) { depth_test(p, x, y, v); }
 
 #endif

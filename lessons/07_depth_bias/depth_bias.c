@@ -8,8 +8,8 @@
 #include <math.h>
 
 #include "clip.h"
-#include "scanline.h"
-
+#include "depth_buffer.h"
+#include "state.h"
 
 /* m: the steepest slope of z_w on the screen. Over a triangle z_w is the
  * plane z_w = a0 + gx x + gy y (lesson 06), so m = max(|gx|, |gy|), as OpenGL
@@ -59,33 +59,33 @@ double polygon_offset(const DepthBias *bias, double m, double r)
 
 /* The face's corners on the screen, as its triangles are set up: clipped at
  * near and far (clip.c) and divided, or as they are for a face made there. */
-static int face_on_screen(const Target *t, const ScreenFace *f, ScreenVertex *v)
+static int face_on_screen(const ScreenFace *f, int width, int height, ScreenVertex *v)
 {
     Vec4 kept[CLIP_MAX_OUT(CLIP_MAX_IN)];
     if (f->n > CLIP_MAX_IN)
         return 0; /* none: a face of so many corners gets no bias */
     int n = f->clip ? clip_polygon(f->clip, f->n, kept) : f->n;
     for (int k = 0; k < n; k++)
-        v[k] = f->clip ? clip_to_screen(kept[k], t->width, t->height) : f->v[k];
+        v[k] = f->clip ? clip_to_screen(kept[k], width, height) : f->v[k];
     return n;
 }
 
 /* One face: a decal is drawn with its o, m from its plane (its triangles lie
  * in one) and r from its corners; any other face with o = 0, exactly as
  * lesson 06 draws it. */
-static void draw_biased_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+static void draw_biased_face(Target *t, LessonState *state, const ScreenFace *f,
+                             const DrawContext *ctx)
 {
-    DepthSetup *s = t->depth_setup;
+    const DepthSetup *s = &state->depth;
     ScreenVertex v[CLIP_MAX_OUT(CLIP_MAX_IN)];
+    float o = 0;
     int n;
     if (s->bias.mesh && mesh_face_in(s->bias.mesh, f->face, "decal") &&
-        (n = face_on_screen(t, f, v)) >= 3) {
+        (n = face_on_screen(f, ctx->width, ctx->height, v)) >= 3) {
         DepthPlane p = depth_plane(s, v);
-        s->offset = (float)polygon_offset(&s->bias, depth_slope(&p),
-                                          resolvable_difference(s, v, n));
+        o = (float)polygon_offset(&s->bias, depth_slope(&p), resolvable_difference(s, v, n));
     }
-    draw_triangles(t, f, ctx);
-    s->offset = 0;
+    draw_triangles(t, state, f, ctx, o);
 }
 
 const Rasterizer DEPTH_BIAS_ZBUFFER = {

@@ -13,8 +13,8 @@
  * Both mappings are z_w = a + b/d, affine in 1/d, so affine on the screen.
  * In the precision a GPU uses, all float32: each corner's z_w = z_c / w_c
  * (z_c = a w_c + b, w_c = d), then each triangle's plane of z_w, evaluated
- * at every pixel centre the scanline covers. The target carries its buffer's
- * setup (Target.depth_setup), set before clear_depth.
+ * at every pixel centre the scanline covers. The lesson's state (state.h)
+ * holds the buffer's setup, chosen before clear_depth.
  * Lesson 07 (docs/07_depth_bias.md): a face in `decal` adds o = m FACTOR +
  * r UNITS to z_w, m its steepest slope on the screen, r one step of the
  * format there. */
@@ -44,10 +44,17 @@ typedef struct DepthSetup {
     DepthMapping mapping;
     double near, far; /* far may be INFINITY with REVERSED */
     double a, b;      /* z_w = a + b / d */
-    DepthPlane plane; /* of the triangle being drawn */
-    float offset;     /* added to its z_w: o on a decal, else 0 */
-    DepthBias bias;
+    DepthBias bias;   /* o is added to the z_w of a decal's every fragment */
 } DepthSetup;
+
+/* A triangle being drawn (rasterizer.h): lesson 04's, and its plane of z_w. */
+struct Primitive {
+    Target *target;
+    LessonState *state; /* the lesson's own (state.h): the buffer's setup, ... */
+    int face;
+    DepthPlane plane;   /* the triangle's z_w on the screen */
+    float offset;       /* added to its z_w: 0, or lesson 07's depth bias */
+};
 
 /* The steps, in the order depth_buffer.c takes them (each is explained there). */
 DepthSetup depth_setup(DepthFormat format, DepthMapping mapping, double near, double far);
@@ -58,8 +65,10 @@ double decode_depth(DepthFormat format, float stored);
 double depth_quantum(DepthFormat format, double z_w); /* one step of z_w there */
 double depth_step(const DepthSetup *s, double d);     /* ... and of d, in world units */
 DepthPlane depth_plane(const DepthSetup *s, const ScreenVertex v[3]); /* a triangle's */
-void draw_triangles(Target *t, const ScreenFace *f, const DrawContext *ctx); /* each with its plane */
-double stored_to_depth(const Target *t, float stored); /* a stored value back as d */
+/* Each triangle with its plane; offset is added to every z_w (lesson 07's bias). */
+void draw_triangles(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx,
+                    float offset);
+double stored_to_depth(const LessonState *s, float stored); /* a stored value back as d */
 /* Lesson 07's steps (depth_bias.c): m, r and o of a face. */
 double depth_slope(const DepthPlane *p);
 double resolvable_difference(const DepthSetup *s, const ScreenVertex *v, int n);

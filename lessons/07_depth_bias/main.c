@@ -9,14 +9,16 @@
 #include <stdio.h>
 
 #include "depth_format.h"
+#include "state.h"
 #include "extras/extras.h"
 #include "harness/lesson.h"
 
 /* How far apart two surfaces must be to be told apart, at a few distances. */
-static void print_depth_steps(const Target *t)
+static void print_depth_steps(const Target *t, const LessonState *state)
 {
     static const double AT[] = {1, 10, 100, 300};
-    const DepthSetup *s = t->depth_setup;
+    const DepthSetup *s = &state->depth;
+    (void)t;
     printf("  depth step (%s, %s, near %g, far %g):", format_name(s->format),
            mapping_name(s->mapping), s->near, s->far);
     for (size_t k = 0; k < sizeof AT / sizeof AT[0]; k++)
@@ -42,9 +44,9 @@ int main(int argc, char **argv)
     int status = run_load(&run, &LESSON, argc, argv); /* load: the command line, the scene */
     if (status != RUN_GO)
         return status;
-    DepthSetup depth = depth_chosen(&run);             /* --depth-format, --depth-mapping */
-    run.target.depth_setup = &depth;                   /* the buffer's format and mapping */
-    run.rz->clear(&run.target);                        /* clear: to the far plane, 1 or 0 */
+    LessonState state = {depth_chosen(&run)};         /* --depth-format, --depth-mapping */
+    run.rasterizer.state = &state;                     /* the buffer's format and mapping */
+    run.rz->clear(&run.target, run.rz->state);         /* clear: to the far plane, 1 or 0 */
     if (run_draw(&run) &&                              /* draw: clip, divide, draw_face */
         run_write(&run))                               /* write: the pictures asked for */
         run_report(&run);                              /* report: the summary, the steps */

@@ -1,10 +1,10 @@
-/* early_z.c: lesson 08, where the fragment shader runs (early_z.h): lesson 07
- * draws and tests each face, extras/ hands each fragment to fragment(). */
+/* early_z.c: lesson 08, where the fragment shader runs (early_z.h): every
+ * fragment of a span comes to fragment(), which runs the shader and lesson
+ * 06's depth test in the order the mode says. */
 #include "early_z.h"
 
-#include <stdlib.h>
-
-#include "extras/extras.h"
+#include "extras/shader.h"
+#include "state.h"
 
 /* A cutout's holes: squares of 4 x 4 pixels, every other one kept. */
 bool cutout_keeps(int x, int y)
@@ -12,78 +12,68 @@ bool cutout_keeps(int x, int y)
     return (((x >> 2) ^ (y >> 2)) & 1) == 0;
 }
 
-static void run_shader(EarlyZ *z, size_t i, Rgb lit, int x, int y, bool write)
+/* The shader at pixel i (x, y): counted, its colour written if write. */
+static Rgb run_shader(EarlyZ *z, size_t i, int face, int x, int y, bool write)
 {
-    Rgb c = shade_fragment(lit, x, y);
+    Rgb c = shade_fragment(z->lit[face], x, y);
     z->shaded++, z->shade_count[i]++;
     if (write)
         z->colour[i] = c;
+    return c;
 }
 
-/* Lesson 07's test just passed (won) or not; saved_*: pixel i before it. */
-void fragment(EarlyZ *z, Target *t, size_t i, int x, int y, int face, bool cutout, Rgb lit)
+/* The prepass's second pass: depth writes off, the equal test. Where two
+ * faces store the same value the one pass 1 kept passes (the first drawn,
+ * as everywhere in the series): the fragment passes where it left its face. */
+static bool depth_equal(const Primitive *p, int x, int y)
 {
-    bool won = t->face[i] == face, kept = !cutout || cutout_keeps(x, y);
+    Target *t = p->target;
+    size_t i = (size_t)y * (size_t)t->width + (size_t)x;
+    bool passed = t->face[i] == p->face;
+    target_record(t, i, p->face, fragment_depth(p, x, y), t->depth[i], passed);
+    return passed;
+}
+
+void fragment(const Primitive *p, int x, int y, float inv_d)
+{
+    EarlyZ *z = &p->state->early_z;
+    size_t i = (size_t)y * (size_t)p->target->width + (size_t)x;
+    bool cutout = is_cutout(z, p->face), kept = !cutout || cutout_keeps(x, y);
     if (z->pass == 2) {
-        /* SOLUTION BEGIN: depth writes off (the pixel put back), and the
-         * equal test passes where pass 1 left this face. */
-        t->depth[i] = z->saved_depth[i];
-        t->face[i] = z->saved_face[i];
+        /* SOLUTION BEGIN: the equal test, then the shader where it passed
+         * (a cutout still discards its holes). */
         z->tested++;
-        if (z->saved_face[i] == face)
-            run_shader(z, i, lit, x, y, true);
+        if (depth_equal(p, x, y))
+            run_shader(z, i, p->face, x, y, kept);
         /* SOLUTION STUB
-        (void)won; (void)lit;
+        (void)kept; (void)i; (void)depth_equal;
         */
         /* SOLUTION END */
     } else if (z->pass == 1 || z->mode == Z_LATE || (cutout && !z->bug_discard)) {
         /* SOLUTION BEGIN: late-Z (pass 1 runs only the cheap discard): the
          * shader first; a discarded fragment never reaches the test. */
-        if (z->pass != 1)
-            run_shader(z, i, lit, x, y, won && kept);
-        if (!kept && won) {
-            t->depth[i] = z->saved_depth[i];
-            t->face[i] = z->saved_face[i];
-        }
-        z->tested += kept;
+        Rgb c = z->pass == 1 ? (Rgb){0, 0, 0} : run_shader(z, i, p->face, x, y, false);
+        if (!kept)
+            return;
+        z->tested++;
+        if (depth_test(p, x, y, inv_d) && z->pass != 1)
+            z->colour[i] = c;
         /* SOLUTION STUB
-        (void)won; (void)kept; (void)lit;
+        (void)kept; (void)inv_d;
         */
         /* SOLUTION END */
     } else {
         /* SOLUTION BEGIN: early-Z: the test first, the shader if it passed. */
+        int32_t before = p->target->face[i];
         z->tested++;
-        if (won)
-            run_shader(z, i, lit, x, y, kept);
-        if (won && !kept) /* --bug: the discard comes too late, the depth stays */
-            t->face[i] = z->saved_face[i];
+        if (depth_test(p, x, y, inv_d)) {
+            run_shader(z, i, p->face, x, y, kept);
+            if (!kept) /* --bug: the discard comes too late, the depth stays */
+                p->target->face[i] = before;
+        }
         /* SOLUTION STUB
-        (void)won; (void)kept; (void)lit; (void)run_shader;
+        (void)kept; (void)inv_d; (void)run_shader;
         */
         /* SOLUTION END */
     }
-}
-
-/* Every face in --sort's order; a prepass draws them all twice. */
-bool draw_scene(Run *run, Error *err)
-{
-    Render *r = &run->render;
-    Target *t = &run->target;
-    EarlyZ *z = (EarlyZ *)t->depth_setup;
-    int n = r->mesh.nfaces, *order = malloc((size_t)(n > 0 ? n : 1) * sizeof *order);
-    if (!order)
-        return error_set(err, "out of memory for the order of %d faces", n);
-    sort_faces(r, z->sort, order);
-    z->pass = z->mode == Z_PREPASS ? 1 : 0;
-    bool ok = render_faces(r, t, run->rz, order, n, inspect_after_face, &run->inspection, err);
-    if (ok && z->mode == Z_PREPASS) {
-        FaceCounts once = r->counts; /* the summary counts each face once */
-        z->pass = 2;
-        ok = render_faces(r, t, run->rz, order, n, NULL, NULL, err);
-        r->counts = once;
-    }
-    for (size_t i = 0; i < (size_t)t->width * (size_t)t->height; i++)
-        z->covered += t->face[i] != NO_FACE;
-    free(order);
-    return ok;
 }

@@ -9,11 +9,13 @@
 #include "early_z.h"
 #include "extras/extras.h"
 #include "harness/lesson.h"
+#include "state.h"
 
 /* How much shading the picture cost. */
-static void print_shading(const Target *t)
+static void print_shading(const Target *t, const LessonState *s)
 {
-    const EarlyZ *z = (const EarlyZ *)t->depth_setup;
+    const EarlyZ *z = &s->early_z;
+    (void)t;
     printf("  z-mode %s, sort %s: fragments tested %llu, shaded %llu, pixels covered %llu\n"
            "  shaded / covered: %.3f\n", z_mode_name(z->mode), sort_name(z->sort), z->tested,
            z->shaded, z->covered, z->covered ? (double)z->shaded / (double)z->covered : 0.0);
@@ -36,14 +38,14 @@ int main(int argc, char **argv)
     int status = run_load(&run, &LESSON, argc, argv); /* load: the command line, the scene */
     if (status != RUN_GO)
         return status;
-    EarlyZ z = early_z_chosen(&run);                   /* --z-mode, --sort, --bug */
-    if (!early_z_begin(&z, &run, &run.err))            /* the buffers; draw through z */
+    LessonState state = early_z_chosen(&run);          /* --z-mode, --sort, --bug */
+    if (!early_z_begin(&state, &run, &run.err))        /* the buffers; draw through them */
         return run_end(&run);
-    run.rz->clear(&run.target);                        /* clear: to the far plane, 1 */
+    run.rz->clear(&run.target, run.rz->state);         /* clear: to the far plane, 1 */
     if (run_draw(&run) &&                              /* draw: sorted, one or two passes */
         run_write(&run))                               /* write: the pictures asked for */
         run_report(&run);                              /* report: the summary, the counts */
     status = run_end(&run);
-    early_z_free(&z);
+    early_z_free(&state.early_z);
     return status;
 }

@@ -9,7 +9,7 @@
 #ifndef HIERARCHICAL_Z_H
 #define HIERARCHICAL_Z_H
 
-#include "depth_format.h"
+#include "depth_buffer.h"
 
 typedef struct HierarchicalZ {
     int tile, tiles_x, tiles_y; /* tile side in pixels; tiles across and down */
@@ -20,12 +20,12 @@ typedef struct HierarchicalZ {
 } HierarchicalZ;
 
 /* The steps, in the order hierarchical_z.c takes them (each is explained there). */
-bool hiz_begin(HierarchicalZ *h, Target *t, int tile, Error *err); /* t->hiz = h */
-void hiz_read_tile(HierarchicalZ *h, const Target *t, int tile);
-void hiz_clear(Target *t);                                   /* clear_depth, every tile too */
-float hiz_bound(const DepthSetup *s, int x0, int y0, int x1, int y1, bool nearest); /* plane's */
-bool hiz_skips(const Target *t, int tile, float nearest);
-void hiz_covered(const Target *t, int tile, float farthest); /* a triangle covered it */
+bool hiz_begin(HierarchicalZ *h, const Target *t, int tile, Error *err); /* t's tiles */
+void hiz_read_tile(HierarchicalZ *h, const DepthSetup *s, const Target *t, int tile);
+void hiz_clear(Target *t, LessonState *s);                   /* clear_depth, every tile too */
+float hiz_bound(const Primitive *p, int x0, int y0, int x1, int y1, bool nearest); /* plane's */
+bool hiz_skips(HierarchicalZ *h, const DepthSetup *s, int tile, float nearest);
+void hiz_covered(HierarchicalZ *h, const DepthSetup *s, int tile, float farthest);
 void hiz_free(HierarchicalZ *h);
 
 /* Lesson 07's faces (decals biased) drawn by tiles.c, with the tile buffer. */

@@ -9,12 +9,14 @@
 #include "extras/extras.h"
 #include "hierarchical_z.h"
 #include "harness/lesson.h"
+#include "state.h"
 
 /* How much shading the picture cost, and what the tiles saved. */
-static void print_shading(const Target *t)
+static void print_shading(const Target *t, const LessonState *s)
 {
-    const EarlyZ *z = (const EarlyZ *)t->depth_setup;
-    const HierarchicalZ *h = t->hiz;
+    const EarlyZ *z = &s->early_z;
+    const HierarchicalZ *h = s->hiz;
+    (void)t;
     printf("  z-mode %s, sort %s: fragments tested %llu, shaded %llu, pixels covered %llu\n"
            "  shaded / covered: %.3f\n", z_mode_name(z->mode), sort_name(z->sort), z->tested,
            z->shaded, z->covered, z->covered ? (double)z->shaded / (double)z->covered : 0.0);
@@ -40,19 +42,20 @@ int main(int argc, char **argv)
     int status = run_load(&run, &LESSON, argc, argv); /* load: the command line, the scene */
     if (status != RUN_GO)
         return status;
-    EarlyZ z = early_z_chosen(&run);                   /* --z-mode, --sort, --bug */
+    LessonState state = early_z_chosen(&run);          /* --z-mode, --sort, --bug */
     HierarchicalZ h = {.exact = exact_chosen(&run), .count_skipped = true}; /* --hiz-update */
-    if (!early_z_begin(&z, &run, &run.err) ||          /* the buffers; draw through z */
+    state.hiz = &h;
+    if (!early_z_begin(&state, &run, &run.err) ||      /* the buffers; draw through them */
         !hiz_begin(&h, &run.target, tile_chosen(&run), &run.err)) { /* the tiles, --tile */
-        early_z_free(&z);
+        early_z_free(&state.early_z);
         return run_end(&run);
     }
-    run.rz->clear(&run.target);                        /* clear: the far plane, every tile */
+    run.rz->clear(&run.target, run.rz->state);         /* clear: the far plane, every tile */
     if (run_draw(&run) &&                              /* draw: tile by tile, hidden skipped */
         run_write(&run))                               /* write: the pictures asked for */
         run_report(&run);                              /* report: the summary, the counts */
     status = run_end(&run);
     hiz_free(&h);
-    early_z_free(&z);
+    early_z_free(&state.early_z);
     return status;
 }

@@ -8,6 +8,7 @@
 #include "hierarchical_z.h"
 #include "polygon.h"
 #include "scanline.h"
+#include "state.h"
 
 #define S ((int64_t)SUBPIXEL_ONE)
 #define HALF ((int64_t)SUBPIXEL_HALF)
@@ -48,9 +49,9 @@ static Cover cover_of(const EdgeFunction e[3], int x0, int y0, int x1, int y1)
 }
 
 /* The covered pixels of x0..x1, y0..y1, row by row (one run in each), each
- * tested by lesson 06's depth_test, or in a skipped tile only counted. */
-static void draw_tile(Target *t, const EdgeFunction e[3], int x0, int y0, int x1, int y1,
-                      int face, Cover cover, bool skip)
+ * a fragment (lesson 08's fragment step), or in a skipped tile only counted. */
+static void draw_tile(const Primitive *p, const EdgeFunction e[3], int x0, int y0, int x1,
+                      int y1, Cover cover, bool skip)
 {
     for (int y = y0; y <= y1; y++) {
         int first = x0, last = x1;
@@ -62,11 +63,10 @@ static void draw_tile(Target *t, const EdgeFunction e[3], int x0, int y0, int x1
                 a += e[0].step_x, b += e[1].step_x, c += e[2].step_x;
             last--;
         }
-        size_t row = (size_t)y * (size_t)t->width;
         if (skip)
-            t->hiz->fragments_skipped += (unsigned)(last - first + 1);
-        for (size_t i = row + (size_t)first; !skip && first <= last && i <= row + (size_t)last; i++)
-            depth_test(t, i, face, 0.0f);
+            p->state->hiz->fragments_skipped += (unsigned)(last - first + 1);
+        for (int x = first; !skip && x <= last; x++)
+            fragment(p, x, y, 0.0f);
     }
 }
 
@@ -77,8 +77,10 @@ static bool corner_in_range(const ScreenVertex *v)
 }
 
 /* A triangle, either winding, tile by tile; false for anything else (drawn as triangles). */
-bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
+bool draw_polygon(const Primitive *p, const ScreenVertex *v, int n, double far)
 {
+    const Target *t = p->target;
+    const DepthSetup *s = &p->state->depth;
     (void)far; /* lesson 05 clipped at the far plane: no fragment lies beyond */
     int turn;
     if (n != 3 || !corner_in_range(&v[0]) || !corner_in_range(&v[1]) || !corner_in_range(&v[2]))
@@ -100,9 +102,10 @@ bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
     /* The box: the pixels whose centres lie in the corners' range, on the screen. */
     int bx0 = first_pixel(x_lo), by0 = first_pixel(y_lo);
     int bx1 = last_pixel(x_hi, t->width), by1 = last_pixel(y_hi, t->height);
-    HierarchicalZ *h = t->hiz;
+    HierarchicalZ *h = p->state->hiz;
+    bool discards = is_cutout(&p->state->early_z, p->face); /* holes: what is behind stays */
     int side = h ? h->tile : 8;
-    float nearest = h ? hiz_bound(t->depth_setup, bx0, by0, bx1, by1, true) : 0; /* in the box */
+    float nearest = h ? hiz_bound(p, bx0, by0, bx1, by1, true) : 0; /* in the box */
     for (int ty = by0 / side; by0 <= by1 && ty <= by1 / side; ty++) {
         int ty0 = ty * side, ty1 = ty0 + side - 1 < t->height ? ty0 + side - 1 : t->height - 1;
         int y0 = ty0 > by0 ? ty0 : by0, y1 = ty1 < by1 ? ty1 : by1;
@@ -112,45 +115,46 @@ bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
             int x0 = tx0 > bx0 ? tx0 : bx0, x1 = tx1 < bx1 ? tx1 : bx1;
             int k = h ? ty * h->tiles_x + tx : 0;
             /* SOLUTION BEGIN: ask the tile buffer first: can any fragment here pass? */
-            bool skip = h && hiz_skips(t, k, nearest);
+            bool skip = h && hiz_skips(h, s, k, nearest);
             /* SOLUTION STUB
-            bool skip = false; (void)nearest, (void)k;
+            bool skip = false; (void)nearest, (void)k, (void)s;
             */
             /* SOLUTION END */
             Cover cover = skip && !h->count_skipped ? NONE : cover_of(e, x0, y0, x1, y1);
-            bool joins = cover == ALL && !skip && !(h && h->exact);
+            bool joins = cover == ALL && !skip && !(h && (h->exact || discards));
             if (run >= 0 && !joins)
-                draw_tile(t, e, run, y0, x0 - 1, y1, face, ALL, false), run = -1;
+                draw_tile(p, e, run, y0, x0 - 1, y1, ALL, false), run = -1;
             if (joins && run < 0)
                 run = x0;
             else if (!joins && cover != NONE)
-                draw_tile(t, e, x0, y0, x1, y1, face, cover, skip);
+                draw_tile(p, e, x0, y0, x1, y1, cover, skip);
             /* SOLUTION BEGIN: then keep it up to date: a tile the triangle covers whole
-             * holds nothing farther than the plane's farthest value there. */
-            if (h && !skip && h->exact)
-                hiz_read_tile(h, t, k);
+             * holds nothing farther than the plane's farthest value there (unless
+             * a cutout left holes: that tile is read again). */
+            if (h && !skip && (h->exact || (discards && cover != NONE)))
+                hiz_read_tile(h, s, t, k);
             else if (h && !skip && cover == ALL && x0 == tx0 && x1 == tx1 && y0 == ty0 && y1 == ty1)
-                hiz_covered(t, k, hiz_bound(t->depth_setup, x0, y0, x1, y1, false));
+                hiz_covered(h, s, k, hiz_bound(p, x0, y0, x1, y1, false));
             /* SOLUTION STUB
             */
             /* SOLUTION END */
         }
         if (run >= 0)
-            draw_tile(t, e, run, y0, bx1, y1, face, ALL, false);
+            draw_tile(p, e, run, y0, bx1, y1, ALL, false);
     }
     return true;
 }
 
-/* One face: a convex face as one polygon, any other as its triangles (polygon.h). */
-void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+/* Lesson 07's face (a decal biased), drawn by draw_polygon above; counted
+ * when the tile buffer skipped every tile it asked about. */
+static void draw_tiled_face(Target *t, LessonState *s, const ScreenFace *f,
+                            const DrawContext *ctx)
 {
-    draw_face_as_polygons(t, f, ctx, draw_polygon);
-}
-
-/* Lesson 07's face (a decal biased), drawn by the functions above. */
-static void draw_tiled_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
-{
-    DEPTH_BIAS_ZBUFFER.draw_face(t, f, ctx);
+    HierarchicalZ *h = s->hiz;
+    unsigned long long tested = h ? h->tiles_tested : 0, skipped = h ? h->tiles_skipped : 0;
+    DEPTH_BIAS_ZBUFFER.draw_face(t, s, f, ctx);
+    if (h && h->tiles_tested > tested && h->tiles_tested - tested == h->tiles_skipped - skipped)
+        h->faces_skipped++;
 }
 
 const Rasterizer HIERARCHICAL_ZBUFFER = {

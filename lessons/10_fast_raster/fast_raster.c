@@ -9,6 +9,7 @@
 #include <stdlib.h>
 
 #include "extras/engine.h"
+#include "state.h"
 
 #define S ((int64_t)SUBPIXEL_ONE) /* sub-pixel units per pixel */
 #define HALF_PIXEL ((int64_t)SUBPIXEL_HALF)
@@ -85,8 +86,9 @@ static void bin_polygon(Bins *b, Poly *p, const Corner *c, int n)
 }
 
 /* Its box on the screen, whether the far plane may discard fragments; binned. */
-static void set_up_polygon(Target *t, const Corner *c, int n, int turn, int face, double inv_far)
+static void set_up_polygon(const Primitive *q, const Corner *c, int n, int turn, double inv_far)
 {
+    Target *t = q->target;
     Corner lo, hi; /* the least and largest x, y and 1/d of the corners */
     corners_range(c, n, &lo, &hi);
     Poly p = {.turn = turn, .inv_far = inv_far, /* the pixel centres of the box, on the screen */
@@ -99,17 +101,17 @@ static void set_up_polygon(Target *t, const Corner *c, int n, int turn, int face
     /* Every 1/d inside lies between the corners' (up to rounding, far below
      * FAR_SLACK): unless one is near the far plane, nothing is discarded. */
     p.walked = turn == 0 || !(lo.inv_d - inv_far > FAR_SLACK * hi.inv_d);
-    p.depth = block_depth((FastRaster *)t->depth_setup, face, &p.plain);
-    Bins *b = bins_of(t);
+    p.depth = block_depth(q, &p.plain);
+    Bins *b = bins_of(t, q->state);
     bool room = b && b->npoly < FLUSH_POLYGONS && bins_room(b, &p, n);
     if (b && !room) /* draw what waits, then there is room */
-        fast_finish(t), room = bins_room(b, &p, n);
+        fast_finish(t, q->state), room = bins_room(b, &p, n);
     if (room)
         bin_polygon(b, &p, c, n);
 }
 
 /* A convex polygon as lesson 04 takes it; false: it would draw its triangles. */
-bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
+bool draw_polygon(const Primitive *p, const ScreenVertex *v, int n, double far)
 {
     if (n < 3)
         return true;
@@ -128,7 +130,7 @@ bool draw_polygon(Target *t, const ScreenVertex *v, int n, int face, double far)
     } else if (!convex_on_screen(v, n, SUBPIXEL_ONE, &turn))
         return false;
     corners_on_plane(c, v, n); /* lesson 04's 1/d of the snapped corners */
-    set_up_polygon(t, c, n, turn, face, 1.0 / far);
+    set_up_polygon(p, c, n, turn, 1.0 / far);
     return true;
 }
 
@@ -169,7 +171,7 @@ static uint64_t block_coverage(const TileWork *w, const EdgeFn *e, uint32_t n, i
 static void draw_block(TileWork *w, const Poly *p, int x0, int y0, uint64_t mask, bool window)
 {
     Target *t = w->t;
-    HierarchicalZ *h = window ? NULL : w->view.hiz;
+    HierarchicalZ *h = window ? NULL : w->hiz;
     int k = h ? y0 / BLOCK_SIZE * h->tiles_x + x0 / BLOCK_SIZE : 0;
     if (w->fr->count) { /* every fragment counted, one by one */
         for (int bit = 0; bit < BLOCK_SIZE * BLOCK_SIZE; bit++)
@@ -179,10 +181,10 @@ static void draw_block(TileWork *w, const Poly *p, int x0, int y0, uint64_t mask
     }
     /* SOLUTION BEGIN: lesson 09's question, per block: the plane's nearest
      * value over the block's part of the box against the block's farthest. */
-    DepthSetup plane = plane_setup(&p->depth);
+    Primitive plane = plane_of(w, &p->depth);
     int x1 = imin(x0 + LAST, p->x1 - 1), y1 = imin(y0 + LAST, p->y1 - 1);
     float nearest = h ? hiz_bound(&plane, imax(x0, p->x0), imax(y0, p->y0), x1, y1, true) : 0;
-    if (h && hiz_skips(&w->view, k, nearest))
+    if (h && hiz_skips(h, &w->s->depth, k, nearest))
         return;
     /* SOLUTION END */
     const BlockKernels *kernels = p->plain || x0 + BLOCK_SIZE > t->width ? &PLAIN_KERNELS : w->k;
@@ -190,8 +192,9 @@ static void draw_block(TileWork *w, const Poly *p, int x0, int y0, uint64_t mask
     float far;
     uint64_t passed = kernels->depth_test(t->depth + i, t->face + i, (size_t)t->width, x0, y0,
                                           mask, &p->depth, &far);
-    if (t->counting) /* the summary's totals, only when asked for */
-        w->stats.tested += popcount(mask), w->stats.passed += popcount(passed);
+    if (t->counting) /* the summary's totals, only when asked for; a hole is never tested */
+        w->stats.tested += popcount(mask & p->depth.keep),
+            w->stats.passed += popcount(passed & p->depth.keep);
     if (h && !isnan(far)) /* else, as writes only come nearer, it still bounds them */
         h->far[k] = far;
 }
@@ -248,12 +251,12 @@ static void *draw_tiles(void *arg)
     return NULL;
 }
 
-void fast_finish(Target *t)
+void fast_finish(Target *t, LessonState *s)
 {
-    FastRaster *fr = (FastRaster *)t->depth_setup;
+    FastRaster *fr = &s->fast;
     if (fr->set_up_only)
         return;
-    set_up_held_faces(t);
+    set_up_held_faces(t, s);
     Bins *b = fr->bins;
     int ntiles = b ? b->tiles_x * b->tiles_y : 0, busy = 0;
     int nthreads = fr->count ? 1 : imax(1, fr->threads), started = 1;
@@ -266,7 +269,7 @@ void fast_finish(Target *t)
     Work work = {.b = b, .tiles = tiles, .ntiles = busy};
     atomic_init(&work.next, 0);
     for (int i = 0; id && i < nthreads; i++)
-        th[i].work = &work, tile_work_begin(&th[i].tw, t, fr);
+        th[i].work = &work, tile_work_begin(&th[i].tw, t, s);
     while (id && started < imin(nthreads, busy) &&
            pthread_create(&id[started], NULL, draw_tiles, &th[started]) == 0)
         started++;
@@ -283,5 +286,5 @@ void fast_finish(Target *t)
 
 const Rasterizer FAST_ZBUFFER = {
     .clear = clear_fast, .draw_face = draw_fast_face, .stored_to_depth = stored_to_depth,
-    .clips = true, .finish = fast_finish,
+    .clips = true,
 };

@@ -12,7 +12,7 @@
 
 #include <stdint.h>
 
-#include "depth_format.h"
+#include "depth_buffer.h"
 
 #define TILE_SIZE 64 /* pixels: a tile is 8 x 8 blocks */
 #define BLOCK_SIZE 8 /* pixels: a block row is one AVX2 register of floats */
@@ -22,7 +22,6 @@ typedef struct Bins Bins; /* what waits for fast_finish (extras/engine.h) */
 typedef struct Held Held; /* faces held back for the threads to set up */
 
 typedef struct {
-    DepthSetup depth; /* first: Target.depth_setup points here, so at the FastRaster */
     Simd simd;        /* the widest this machine has, or --simd */
     int threads;      /* --threads */
     bool count;       /* overdraw[] and --trace: plain C, one thread */
@@ -31,13 +30,14 @@ typedef struct {
     bool set_up_only; /* a thread's copy, setting faces up: it never draws */
 } FastRaster;
 
-FastRaster fast_raster(DepthSetup depth, Simd simd, int threads, bool count);
+/* The lesson's state (state.h): depth, the engine, no tile buffer yet. */
+LessonState fast_raster(DepthSetup depth, Simd simd, int threads, bool count);
 Simd simd_best(void);
-void fast_finish(Target *t); /* draws every tile's bin */
+void fast_finish(Target *t, LessonState *s); /* draws every tile's bin */
 void fast_raster_free(FastRaster *fr);
 
 /* hiz_clear; each face set up as lesson 07 sets it up, its polygons
- * binned; fast_finish. */
+ * binned; then fast_finish draws them. */
 extern const Rasterizer FAST_ZBUFFER;
 
 #endif

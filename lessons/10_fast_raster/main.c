@@ -8,6 +8,7 @@
 #include "extras/extras.h" /* and lesson 09's hierarchical_z.h */
 #include "fast_raster.h"
 #include "harness/lesson.h"
+#include "state.h"
 
 static const Lesson LESSON = {
     .program = "10_fast_raster",
@@ -26,19 +27,20 @@ int main(int argc, char **argv)
     int status = run_load(&run, &LESSON, argc, argv); /* load: the command line, the scene */
     if (status != RUN_GO)
         return status;
-    FastRaster fr = fast_chosen(&run);                 /* --simd, --threads, the depth flags */
-    run.target.depth_setup = &fr.depth;                /* the buffer's format, the engine */
+    LessonState state = fast_chosen(&run);             /* --simd, --threads, the depth flags */
     HierarchicalZ h = {0};
-    if (!hiz_begin(&h, &run.target, BLOCK_SIZE, &run.err)) { /* the tiles: one per block */
-        fast_raster_free(&fr);
+    if (!hiz_begin(&h, &run.target, BLOCK_SIZE, &run.err)) /* the tiles: one per block */
         return run_end(&run);
+    state.hiz = &h;
+    run.rasterizer.state = &state;                     /* the format, the engine, the tiles */
+    run.rz->clear(&run.target, run.rz->state);         /* clear: the far plane, every tile */
+    if (run_draw(&run)) {                              /* draw: each face set up, binned */
+        fast_finish(&run.target, &state);              /* ... then drawn, tile by tile */
+        if (run_write(&run))                           /* write: the pictures asked for */
+            run_report(&run);                          /* report: the summary, the engine */
     }
-    run.rz->clear(&run.target);                        /* clear: the far plane, every tile */
-    if (run_draw(&run) &&                              /* draw: binned, then tile by tile */
-        run_write(&run))                               /* write: the pictures asked for */
-        run_report(&run);                              /* report: the summary, the engine */
     status = run_end(&run);
     hiz_free(&h);
-    fast_raster_free(&fr);
+    fast_raster_free(&state.fast);
     return status;
 }

@@ -152,8 +152,8 @@ static void depth_is_interpolated_linearly_at_chosen_pixels(void **state)
     assert_true(render_target_init(&t, &ZBUFFER, 64, 64, &err));
     ScreenVertex v[3] = {{0, 0, 1}, {64, 0, 3}, {0, 64, 5}};
     ScreenFace f = screen_triangle(v, 0);
-    DrawContext ctx = {0.1, 100};
-    draw_face(&t, &f, &ctx);
+    DrawContext ctx = {0.1, 100, t.width, t.height};
+    draw_face(&t, NULL, &f, &ctx);
     const struct { int x, y; float d; } want[4] = {
         {15, 31, 3.453125f}, {40, 10, 2.921875f}, {0, 0, 1.046875f}, {62, 0, 2.984375f}};
     for (int k = 0; k < 4; k++)
@@ -181,8 +181,8 @@ static void fragments_beyond_far_are_discarded_untested(void **state)
     assert_true(render_target_init(&t, &ZBUFFER, 16, 16, &err));
     ScreenVertex v[3] = {{1, 1, 60}, {15, 1, 60}, {1, 15, 60}};
     ScreenFace f = screen_triangle(v, 0);
-    DrawContext ctx = {0.1, 50};
-    draw_face(&t, &f, &ctx);
+    DrawContext ctx = {0.1, 50, t.width, t.height};
+    draw_face(&t, NULL, &f, &ctx);
     expect_count(0, t.stats.tested, "fragments tested");
     expect_target_face(&t, 3, 3, NO_FACE, "");
     target_free(&t);

@@ -33,8 +33,8 @@ static void draw_screen_triangle(Target *t, const Rasterizer *rz, ScreenVertex a
 {
     ScreenVertex v[3] = {a, b, c};
     ScreenFace f = screen_triangle(v, face);
-    DrawContext ctx = {0.1, 1000};
-    rz->draw_face(t, &f, &ctx);
+    DrawContext ctx = {0.1, 1000, t->width, t->height};
+    rz->draw_face(t, NULL, &f, &ctx);
 }
 
 static void expect_relative(double got, double want, double tolerance, const char *what)
@@ -216,8 +216,8 @@ static void fragments_beyond_far_are_discarded_untested(void **state)
     Target t = new_target(16, 16, &ZBUFFER);
     ScreenVertex v[3] = {{1, 1, 60}, {15, 1, 60}, {1, 15, 60}};
     ScreenFace f = screen_triangle(v, 0);
-    DrawContext ctx = {0.1, 50};
-    draw_face(&t, &f, &ctx);
+    DrawContext ctx = {0.1, 50, t.width, t.height};
+    draw_face(&t, NULL, &f, &ctx);
     expect_count(0, t.stats.tested, "fragments tested");
     expect_target_face(&t, 3, 3, NO_FACE, "");
     target_free(&t);

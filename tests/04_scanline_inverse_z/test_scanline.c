@@ -35,7 +35,7 @@ static Target make_target(int width, int height)
     Error err;
     if (!target_init(&t, width, height, &err))
         fail_msg("target_init: %s", err.msg);
-    clear_depth(&t);
+    clear_depth(&t, NULL);
     return t;
 }
 
@@ -51,7 +51,7 @@ static void draw_flat(Target *t, const double (*xy)[2], int n, double d, int fac
     ScreenVertex v[16];
     for (int i = 0; i < n; i++)
         v[i] = sv(xy[i][0], xy[i][1], d);
-    assert_true(draw_polygon(t, v, n, face, FAR));
+    assert_true(draw_polygon(&(Primitive){t, NULL, face}, v, n, FAR));
 }
 
 /* The same corners in the other winding. */
@@ -60,7 +60,7 @@ static void draw_flat_reversed(Target *t, const double (*xy)[2], int n, double d
     ScreenVertex v[16];
     for (int i = 0; i < n; i++)
         v[i] = sv(xy[n - 1 - i][0], xy[n - 1 - i][1], d);
-    assert_true(draw_polygon(t, v, n, face, FAR));
+    assert_true(draw_polygon(&(Primitive){t, NULL, face}, v, n, FAR));
 }
 
 /* The buffer as rows of characters. With digits, the view depth d =
@@ -163,7 +163,7 @@ static void clear_to_zero_means_nothing_drawn(void **state)
         t.depth[i] = 0.25f;
         t.face[i] = 7;
     }
-    clear_depth(&t);
+    clear_depth(&t, NULL);
     for (size_t i = 0; i < 20; i++) {
         assert_true(t.depth[i] == 0.0f);
         expect_count(NO_FACE, t.face[i], "face after the clear");
@@ -177,7 +177,7 @@ static void clear_to_zero_loses_to_a_far_surface(void **state)
 {
     (void)state;
     Target t = make_target(1, 1);
-    assert_true(depth_test(&t, 0, 3, (float)(1.0 / 900.0)));
+    assert_true(depth_test(&(Primitive){&t, NULL, 3}, 0, 0, (float)(1.0 / 900.0)));
     expect_target_face(&t, 0, 0, 3, "");
     target_free(&t);
 }
@@ -188,10 +188,10 @@ static void larger_inverse_depth_wins(void **state)
 {
     (void)state;
     Target t = make_target(2, 1);
-    assert_true(depth_test(&t, 0, 1, (float)(1.0 / 4.0)));  /* far first */
-    assert_true(depth_test(&t, 0, 2, (float)(1.0 / 2.0)));  /* near wins over it */
-    assert_true(depth_test(&t, 1, 2, (float)(1.0 / 2.0)));  /* near first */
-    assert_false(depth_test(&t, 1, 1, (float)(1.0 / 4.0))); /* far loses */
+    assert_true(depth_test(&(Primitive){&t, NULL, 1}, 0, 0, (float)(1.0 / 4.0)));  /* far first */
+    assert_true(depth_test(&(Primitive){&t, NULL, 2}, 0, 0, (float)(1.0 / 2.0)));  /* near wins over it */
+    assert_true(depth_test(&(Primitive){&t, NULL, 2}, 1, 0, (float)(1.0 / 2.0)));  /* near first */
+    assert_false(depth_test(&(Primitive){&t, NULL, 1}, 1, 0, (float)(1.0 / 4.0))); /* far loses */
     expect_target_face(&t, 0, 0, 2, "near drawn second");
     expect_target_face(&t, 1, 0, 2, "near drawn first");
     assert_true(t.depth[0] == 0.5f && t.depth[1] == 0.5f);
@@ -411,8 +411,8 @@ static void non_convex_polygon_is_refused(void **state)
     Target t = make_target(8, 8);
     ScreenVertex bowtie[4] = {sv(0, 0, 2), sv(8, 8, 2), sv(8, 0, 2), sv(0, 8, 2)};
     ScreenVertex dart[4] = {sv(0, 0, 2), sv(4, 3, 2), sv(8, 0, 2), sv(4, 8, 2)};
-    assert_false(draw_polygon(&t, bowtie, 4, 0, FAR));
-    assert_false(draw_polygon(&t, dart, 4, 0, FAR));
+    assert_false(draw_polygon(&(Primitive){&t, NULL, 0}, bowtie, 4, FAR));
+    assert_false(draw_polygon(&(Primitive){&t, NULL, 0}, dart, 4, FAR));
     expect_count(0, t.stats.tested, "fragments tested");
     target_free(&t);
 }
@@ -428,7 +428,7 @@ static void inverse_depth_is_linear_across_the_span(void **state)
     (void)state;
     Target t = make_target(8, 2);
     ScreenVertex quad[4] = {sv(0, 0, 2), sv(8, 0, 8), sv(8, 2, 8), sv(0, 2, 2)};
-    assert_true(draw_polygon(&t, quad, 4, 0, FAR));
+    assert_true(draw_polygon(&(Primitive){&t, NULL, 0}, quad, 4, FAR));
     for (int y = 0; y < 2; y++)
         for (int x = 0; x < 8; x++) {
             double expected = 0.5 + (x + 0.5) / 8.0 * (0.125 - 0.5);
@@ -447,7 +447,7 @@ static void inverse_depth_is_linear_down_the_edges(void **state)
     (void)state;
     Target t = make_target(8, 64);
     ScreenVertex tri[3] = {sv(0, 0, 1), sv(8, 0, 1), sv(0, 64, 4)};
-    assert_true(draw_polygon(&t, tri, 3, 0, FAR));
+    assert_true(draw_polygon(&(Primitive){&t, NULL, 0}, tri, 3, FAR));
     for (int y = 0; y < 64; y++) {
         double expected = 1.0 + (y + 0.5) / 64.0 * (0.25 - 1.0);
         float stored = t.depth[y * 8];
@@ -475,7 +475,7 @@ static void stepping_along_a_long_span_stays_accurate(void **state)
     const int w = IMAGE_MAX_SIDE;
     Target t = make_target(w, 1);
     ScreenVertex quad[4] = {sv(0, 0, 1), sv(w, 0, 100), sv(w, 1, 100), sv(0, 1, 1)};
-    assert_true(draw_polygon(&t, quad, 4, 0, FAR));
+    assert_true(draw_polygon(&(Primitive){&t, NULL, 0}, quad, 4, FAR));
     expect_count(w, t.stats.tested, "fragments tested");
     int worst_x = -1;
     double worst = 0;
@@ -515,8 +515,8 @@ static void huge_triangle_covers_the_screen_once(void **state)
     ScreenVertex v[3] = {sv(-1e15, -1e15, 3), sv(3e15, -1e15, 3), sv(-1e15, 3e15, 3)};
     Tri tri = {{0, 1, 2}};
     ScreenFace f = face_of(v, 3, &tri, true);
-    DrawContext ctx = {0.1, FAR};
-    draw_face(&t, &f, &ctx);
+    DrawContext ctx = {0.1, FAR, t.width, t.height};
+    draw_face(&t, NULL, &f, &ctx);
     expect_count(64, t.stats.tested, "fragments tested");
     for (int i = 0; i < 64; i++)
         expect_count(1, t.overdraw[i], "fragments tested per pixel");
@@ -532,8 +532,8 @@ static void tall_polygon_walks_only_screen_rows(void **state)
     ScreenVertex v[4] = {sv(0, -1e12, 2), sv(4, -1e12, 2), sv(4, 1e12, 2), sv(0, 1e12, 2)};
     Tri tris[2] = {{{0, 1, 2}}, {{0, 2, 3}}};
     ScreenFace f = face_of(v, 4, tris, true);
-    DrawContext ctx = {0.1, FAR};
-    draw_face(&t, &f, &ctx);
+    DrawContext ctx = {0.1, FAR, t.width, t.height};
+    draw_face(&t, NULL, &f, &ctx);
     expect_count(16, t.stats.tested, "fragments tested");
     target_free(&t);
 }
@@ -545,7 +545,7 @@ static void broken_corners_draw_nothing(void **state)
     (void)state;
     Target t = make_target(8, 8);
     Tri tri = {{0, 1, 2}};
-    DrawContext ctx = {0.1, FAR};
+    DrawContext ctx = {0.1, FAR, t.width, t.height};
     const ScreenVertex broken[4][3] = {
         {{NAN, 0, 2}, {8, 0, 2}, {0, 8, 2}},
         {{0, 0, 2}, {INFINITY, 0, 2}, {0, 8, 2}},
@@ -554,8 +554,8 @@ static void broken_corners_draw_nothing(void **state)
     };
     for (int k = 0; k < 4; k++) {
         ScreenFace f = face_of(broken[k], 3, &tri, true);
-        draw_face(&t, &f, &ctx);
-        assert_false(draw_polygon(&t, broken[k], 3, 0, FAR));
+        draw_face(&t, NULL, &f, &ctx);
+        assert_false(draw_polygon(&(Primitive){&t, NULL, 0}, broken[k], 3, FAR));
     }
     expect_count(0, t.stats.tested, "fragments tested");
     target_free(&t);
@@ -584,8 +584,8 @@ static void non_convex_face_is_drawn_as_its_triangles(void **state)
     ScreenVertex v[4] = {sv(0, 0, 2), sv(4, 4, 2), sv(8, 0, 2), sv(4, 8, 2)};
     Tri tris[2] = {{{0, 1, 3}}, {{1, 2, 3}}};
     ScreenFace f = face_of(v, 4, tris, false);
-    DrawContext ctx = {0.1, FAR};
-    draw_face(&t, &f, &ctx);
+    DrawContext ctx = {0.1, FAR, t.width, t.height};
+    draw_face(&t, NULL, &f, &ctx);
     const char *map[] = {".......#", "......#.", ".#...##.", "..#.##..",
                          "..####..", "...##...", "...##...", "........"};
     expect_map(&t, false, map, "dart drawn as two triangles");
@@ -602,8 +602,8 @@ static void face_not_convex_on_screen_falls_back_to_triangles(void **state)
     ScreenVertex v[4] = {sv(0, 0, 2), sv(4, 4, 2), sv(8, 0, 2), sv(4, 8, 2)};
     Tri tris[2] = {{{0, 1, 3}}, {{1, 2, 3}}};
     ScreenFace f = face_of(v, 4, tris, true);
-    DrawContext ctx = {0.1, FAR};
-    draw_face(&t, &f, &ctx);
+    DrawContext ctx = {0.1, FAR, t.width, t.height};
+    draw_face(&t, NULL, &f, &ctx);
     expect_count(16, t.stats.tested, "fragments tested");
     target_free(&t);
 }
@@ -677,7 +677,7 @@ static void coverage_equals_the_edge_function_rule(void **state)
         if (!convex)
             continue;
         Target t = make_target(width, height);
-        assert_true(draw_polygon(&t, v, n, 0, FAR));
+        assert_true(draw_polygon(&(Primitive){&t, NULL, 0}, v, n, FAR));
         for (int y = 0; y < height; y++)
             for (int x = 0; x < width; x++) {
                 bool expected = reference_inside((const int64_t (*)[2])p, n, winding,

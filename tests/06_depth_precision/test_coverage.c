@@ -3,15 +3,16 @@
  * is stored, not which pixels a face covers. Run with a float32 buffer,
  * reversed, far at 1000: the suite's faces lie between d = 0.1 and 1000. */
 #include "depth_format.h"
+#include "state.h"
 
-static DepthSetup suite_depth;
+static LessonState suite_state;
 
 #define SUITE_RASTERIZER DEPTH_PRECISION_ZBUFFER
-#define SUITE_DEPTH_SETUP (&suite_depth)
+#define SUITE_STATE (&suite_state)
 #include "../shared/coverage_suite.inc"
 
 int main(void)
 {
-    suite_depth = depth_setup(FLOAT32, REVERSED, SUITE_NEAR, SUITE_FAR);
+    suite_state.depth = depth_setup(FLOAT32, REVERSED, SUITE_NEAR, SUITE_FAR);
     return run_coverage_suite("06_depth_precision");
 }

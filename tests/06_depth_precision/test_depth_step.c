@@ -16,6 +16,7 @@
 
 #include "depth_format.h"
 #include "scanline.h"
+#include "state.h"
 #include "test_support.h"
 
 #define NEAR 0.1
@@ -136,14 +137,14 @@ static Target one_pixel(void)
     return t;
 }
 
-/* A fragment at view depth d: the plane of a triangle facing the camera at
- * d set up (as draw_face sets it up before the scanline), and its 1/d as the
- * scanline hands it to depth_test. */
-static float at(DepthSetup *s, double d)
+/* A fragment of face at view depth d at pixel (0, 0): a triangle facing the
+ * camera at d, its plane set up (as draw_triangles sets it up before the
+ * scanline), tested as the scanline hands it to depth_test, with its 1/d. */
+static bool test_at(Target *t, LessonState *s, int face, double d)
 {
     ScreenVertex v[3] = {{0, 0, d}, {4, 0, d}, {0, 4, d}};
-    s->plane = depth_plane(s, v);
-    return (float)(1.0 / d);
+    Primitive p = {.target = t, .state = s, .face = face, .plane = depth_plane(&s->depth, v)};
+    return depth_test(&p, 0, 0, (float)(1.0 / d));
 }
 
 /* A tilted triangle, z_w = n/d (reversed, far = inf, n = 0.1) at its corners
@@ -165,14 +166,13 @@ static void a_triangle_plane_from_its_corners(void **state)
 static void standard_clears_to_one_and_keeps_the_smaller(void **state)
 {
     (void)state;
-    DepthSetup s = depth_setup(UNORM24, STANDARD, NEAR, FAR);
+    LessonState s = {depth_setup(UNORM24, STANDARD, NEAR, FAR)};
     Target t = one_pixel();
-    t.depth_setup = &s;
-    clear_depth(&t);
+    clear_depth(&t, &s);
     assert_true(t.depth[0] == 16777215.0f);
-    assert_true(depth_test(&t, 0, 0, at(&s, 500)));  /* anything before far wins */
-    assert_true(depth_test(&t, 0, 1, at(&s, 2)));    /* nearer wins */
-    assert_false(depth_test(&t, 0, 2, at(&s, 3)));   /* farther loses */
+    assert_true(test_at(&t, &s, 0, 500));  /* anything before far wins */
+    assert_true(test_at(&t, &s, 1, 2));    /* nearer wins */
+    assert_false(test_at(&t, &s, 2, 3));   /* farther loses */
     expect_count(1, t.face[0], "the nearest face");
     /* z_w(2) = 1000/999.9 (1 - 0.05) = 0.95009501, times 2^24 - 1: 15939948.2 */
     assert_true(t.depth[0] == 15939948.0f);
@@ -182,14 +182,13 @@ static void standard_clears_to_one_and_keeps_the_smaller(void **state)
 static void reversed_clears_to_zero_and_keeps_the_larger(void **state)
 {
     (void)state;
-    DepthSetup s = depth_setup(FLOAT32, REVERSED, NEAR, INFINITY);
+    LessonState s = {depth_setup(FLOAT32, REVERSED, NEAR, INFINITY)};
     Target t = one_pixel();
-    t.depth_setup = &s;
-    clear_depth(&t);
+    clear_depth(&t, &s);
     assert_true(t.depth[0] == 0.0f);
-    assert_true(depth_test(&t, 0, 0, at(&s, 1e6))); /* far = inf: a million away still wins */
-    assert_true(depth_test(&t, 0, 1, at(&s, 4)));
-    assert_false(depth_test(&t, 0, 2, at(&s, 8)));
+    assert_true(test_at(&t, &s, 0, 1e6)); /* far = inf: a million away still wins */
+    assert_true(test_at(&t, &s, 1, 4));
+    assert_false(test_at(&t, &s, 2, 8));
     expect_count(1, t.face[0], "the nearest face");
     assert_true(t.depth[0] == 0.025f); /* z_w = n/d, 0.1 / 4 */
     target_free(&t);
@@ -199,21 +198,19 @@ static void reversed_clears_to_zero_and_keeps_the_larger(void **state)
 static void a_tie_keeps_the_first_fragment(void **state)
 {
     (void)state;
-    DepthSetup s = depth_setup(UNORM16, STANDARD, NEAR, FAR);
+    LessonState s = {depth_setup(UNORM16, STANDARD, NEAR, FAR)};
     Target t = one_pixel();
-    t.depth_setup = &s;
-    clear_depth(&t);
+    clear_depth(&t, &s);
     /* At d = 100 one unorm16 code spans about 1.5 m: 100 and 100.05 tie. */
-    assert_true(depth_test(&t, 0, 7, at(&s, 100.05)));
-    assert_false(depth_test(&t, 0, 8, at(&s, 100)));
+    assert_true(test_at(&t, &s, 7, 100.05));
+    assert_false(test_at(&t, &s, 8, 100));
     expect_count(7, t.face[0], "the first face drawn");
     target_free(&t);
-    s = depth_setup(FLOAT32, REVERSED, NEAR, FAR); /* there they are told apart */
+    s.depth = depth_setup(FLOAT32, REVERSED, NEAR, FAR); /* there they are told apart */
     t = one_pixel();
-    t.depth_setup = &s;
-    clear_depth(&t);
-    assert_true(depth_test(&t, 0, 7, at(&s, 100.05)));
-    assert_true(depth_test(&t, 0, 8, at(&s, 100)));
+    clear_depth(&t, &s);
+    assert_true(test_at(&t, &s, 7, 100.05));
+    assert_true(test_at(&t, &s, 8, 100));
     expect_count(8, t.face[0], "the nearer face");
     target_free(&t);
 }

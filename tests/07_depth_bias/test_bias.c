@@ -17,6 +17,7 @@
 
 #include "depth_format.h"
 #include "scanline.h"
+#include "state.h"
 #include "test_support.h"
 
 #define NEAR 0.1
@@ -122,13 +123,12 @@ static void offset_adds_both_terms_then_clamps(void **state)
     expect_close(1e-4, polygon_offset(&bias, m, r), "o = 3m capped at 1e-4");
 }
 
-static Target one_pixel(DepthSetup *s)
+static Target one_pixel(LessonState *s)
 {
     Target t;
     Error err;
     assert_true(target_init(&t, 1, 1, &err));
-    t.depth_setup = s;
-    clear_depth(&t);
+    clear_depth(&t, s);
     return t;
 }
 
@@ -137,15 +137,18 @@ static Target one_pixel(DepthSetup *s)
 static void offset_moves_the_decal_in_front_of_its_base(void **state)
 {
     (void)state;
-    DepthSetup s = depth_setup(UNORM24, STANDARD, NEAR, FAR);
+    LessonState s = {depth_setup(UNORM24, STANDARD, NEAR, FAR)};
     float inv_d = (float)(1.0 / 7.0);
-    s.plane = depth_plane(&s, (ScreenVertex[3]){{0, 0, 7}, {4, 0, 7}, {0, 4, 7}});
     Target t = one_pixel(&s);
-    assert_true(depth_test(&t, 0, 0, inv_d));
-    assert_false(depth_test(&t, 0, 1, inv_d));
+    Primitive base = {.target = &t, .state = &s, .face = 0,
+                      .plane = depth_plane(&s.depth, (ScreenVertex[3]){{0, 0, 7}, {4, 0, 7}, {0, 4, 7}})};
+    Primitive decal = base;
+    decal.face = 1;
+    assert_true(depth_test(&base, 0, 0, inv_d));
+    assert_false(depth_test(&decal, 0, 0, inv_d));
     expect_count(0, t.face[0], "without bias: the base, drawn first");
-    s.offset = -1 / 16777215.0f;
-    assert_true(depth_test(&t, 0, 1, inv_d));
+    decal.offset = -1 / 16777215.0f;
+    assert_true(depth_test(&decal, 0, 0, inv_d));
     expect_count(1, t.face[0], "with o = -1 code: the decal");
     target_free(&t);
 }

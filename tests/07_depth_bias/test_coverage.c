@@ -4,15 +4,16 @@
  * buffer, reversed, far at 1000, and no face offset (the suite's faces are in
  * no group). */
 #include "depth_format.h"
+#include "state.h"
 
-static DepthSetup suite_depth;
+static LessonState suite_state;
 
 #define SUITE_RASTERIZER DEPTH_PRECISION_ZBUFFER
-#define SUITE_DEPTH_SETUP (&suite_depth)
+#define SUITE_STATE (&suite_state)
 #include "../shared/coverage_suite.inc"
 
 int main(void)
 {
-    suite_depth = depth_setup(FLOAT32, REVERSED, SUITE_NEAR, SUITE_FAR);
+    suite_state.depth = depth_setup(FLOAT32, REVERSED, SUITE_NEAR, SUITE_FAR);
     return run_coverage_suite("07_depth_bias");
 }

@@ -1,6 +1,6 @@
 /* test_history.c: the tile buffer never skips a tile where a fragment would
  * have passed. Each scene is drawn through HIERARCHICAL_ZBUFFER twice, with
- * the tile buffer and without it (t->hiz NULL: every covered pixel tested,
+ * the tile buffer and without it (no tile buffer: every covered pixel tested,
  * lesson 08's pixels, as test_program.c shows); after every face both
  * depth and face buffers must be the same, so every pixel has the same
  * history of winners, while the run with tiles tests fewer fragments and
@@ -18,6 +18,7 @@
 
 #include "expect.h"
 #include "hierarchical_z.h"
+#include "state.h"
 #include "harness/render.h"
 #include "harness/scene.h"
 
@@ -60,14 +61,18 @@ static History draw(const char *scene, int tile, uint32_t *tests, DepthMapping m
     assert_true(render_from_mesh(&r, &m, &cam, scene, &err));
     Target t;
     assert_true(target_init(&t, W, H, &err));
-    DepthSetup s = depth_setup(UNORM24, mapping, info->near, info->far);
-    t.depth_setup = &s;
+    /* Lesson 06's buffer; lesson 08's fragment step with depth only (no shader). */
+    LessonState s = {.depth = depth_setup(UNORM24, mapping, info->near, info->far),
+                     .early_z = {.pass = 1}};
     HierarchicalZ hz = {0};
     if (tile > 0)
         assert_true(hiz_begin(&hz, &t, tile, &err));
-    HIERARCHICAL_ZBUFFER.clear(&t);
+    s.hiz = tile > 0 ? &hz : NULL;
+    Rasterizer rz = HIERARCHICAL_ZBUFFER;
+    rz.state = &s;
+    rz.clear(&t, &s);
     History h = {0};
-    assert_true(render_faces(&r, &t, &HIERARCHICAL_ZBUFFER, NULL, 0, remember, &h, &err));
+    assert_true(render_faces(&r, &t, &rz, NULL, 0, remember, &h, &err));
     memcpy(tests, t.overdraw, (size_t)W * H * sizeof *tests);
     hiz_free(&hz);
     target_free(&t);

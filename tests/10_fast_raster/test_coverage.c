@@ -5,17 +5,19 @@
  * on one thread; test_kernels.c shows the SIMD kernels give the same bits,
  * test_program.c the same pictures. Lesson 06's float32 buffer, reversed. */
 #include "fast_raster.h"
+#include "state.h"
 
-static FastRaster engine;
+static LessonState engine; /* no tile buffer */
 
 #define SUITE_RASTERIZER FAST_ZBUFFER
-#define SUITE_DEPTH_SETUP (&engine.depth)
+#define SUITE_STATE (&engine)
+#define SUITE_FINISH(t) fast_finish(t, &engine)
 #include "../shared/coverage_suite.inc"
 
 int main(void)
 {
     engine = fast_raster(depth_setup(FLOAT32, REVERSED, SUITE_NEAR, SUITE_FAR), SIMD_NONE, 1, true);
     int status = run_coverage_suite("10_fast_raster");
-    fast_raster_free(&engine);
+    fast_raster_free(&engine.fast);
     return status;
 }

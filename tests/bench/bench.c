@@ -8,8 +8,8 @@
  * workload (all of them when none is named) straight through draw_face, with
  * no camera and no file I/O in the timed part, and prints one CSV line per
  * workload (measure.h); tests/bench/run-bench.sh makes the table. Lessons 06
- * on (-DBENCH_DEPTH_SETUP) draw into a unorm24 buffer, standard mapping, with
- * the workload's near and far, as GL's default framebuffer has it. */
+ * on draw into a unorm24 buffer, standard mapping, with the workload's near
+ * and far, as GL's default framebuffer has it. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,11 +18,14 @@
 #include "rasterizer.h"
 #include "workloads.h"
 
-/* Lessons 06 on keep their depth buffer in a format (Target.depth_setup):
+/* Lessons 06 on keep their depth buffer's format in their state (state.h):
  * here unorm24 with the standard mapping, the buffer of lessons 08 and 09 and
- * of llvmpipe's rows. Lesson 09 on add a tile buffer (Target.hiz), 8 x 8. */
+ * of llvmpipe's rows. Lessons 08 and 09 draw depth only (lesson 08's
+ * fragment step without its shader: the rasterizer is timed, not the
+ * shader, which bench_early_z times). Lesson 09 on add a tile buffer, 8 x 8. */
 #if BENCH_LESSON_NUMBER >= 6
 #include "depth_format.h"
+#include "state.h"
 #endif
 #if BENCH_LESSON_NUMBER >= 9
 #include "hierarchical_z.h"
@@ -45,23 +48,30 @@ extern const Rasterizer BENCH_RASTERIZER;
  * The warm-up counts (Target.counting): the fragments tested come from it.
  * The timed repetitions count nothing, as a renderer that is asked for no
  * counts would draw (docs/performance.md, "What counting costs"). */
-static bool measure_workload(const Rasterizer *rz, const Workload *w, int reps, int config,
-                             Measurement *m, Error *err)
+static bool measure_workload(const Rasterizer *lesson_rz, const Workload *w, int reps,
+                             int config, Measurement *m, Error *err)
 {
     Target t;
     static char name[64] = BENCH_LESSON;
     bool wall_clock = false;
+    Rasterizer with_state = *lesson_rz;
+    const Rasterizer *rz = &with_state;
     if (!target_init(&t, w->width, w->height, err))
         return false;
 #ifdef BENCH_SETUP
-    if (!bench_configure(&t, config, name, (int)sizeof name, &wall_clock)) {
+    LessonState *state = bench_configure(&t, config, name, (int)sizeof name, &wall_clock);
+    if (!state) {
         target_free(&t);
         return error_set(err, "out of memory for the set-up of %s", BENCH_LESSON);
     }
+    with_state.state = state;
 #elif BENCH_LESSON_NUMBER >= 6
     (void)config;
-    DepthSetup setup = depth_setup(UNORM24, STANDARD, w->ctx.near, w->ctx.far);
-    t.depth_setup = &setup;
+    LessonState state = {.depth = depth_setup(UNORM24, STANDARD, w->ctx.near, w->ctx.far)};
+#if BENCH_LESSON_NUMBER >= 8
+    state.early_z.pass = 1; /* depth only */
+#endif
+    with_state.state = &state;
 #else
     (void)config;
 #endif
@@ -71,16 +81,18 @@ static bool measure_workload(const Rasterizer *rz, const Workload *w, int reps, 
         target_free(&t);
         return false;
     }
+    with_state.state->hiz = &hiz;
 #endif
     double times[MAX_REPS];
     bool same = true;
     for (int k = -BENCH_WARMUP; k < reps; k++) {
-        target_reset(&t, rz->clear);
+        target_reset(&t, rz);
         t.counting = k < 0;
         double start = wall_clock ? now_wall_seconds() : now_seconds();
         workload_draw(w, &t, rz);
-        if (rz->finish) /* a rasterizer that holds faces back draws them now */
-            rz->finish(&t);
+#ifdef BENCH_FINISH
+        BENCH_FINISH(&t, rz->state); /* a rasterizer that holds faces back draws them now */
+#endif
         double elapsed = (wall_clock ? now_wall_seconds() : now_seconds()) - start;
         uint64_t sum = depth_checksum(&t);
         if (k < 0) {

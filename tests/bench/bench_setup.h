@@ -7,15 +7,15 @@
 
 #include <stdbool.h>
 
-#include "target.h"
+#include "rasterizer.h"
 
 /* How many configurations the lesson is timed in. */
 int bench_configs(void);
 
-/* Sets t up for configuration k (t->depth_setup, before the clear); puts
- * the row's name in name (e.g. "10_fast_raster_1t") and whether its time is
- * the wall clock (threads working together) rather than this thread's CPU
- * time. False: out of memory. */
-bool bench_configure(Target *t, int k, char *name, int size, bool *wall_clock);
+/* The lesson's state for configuration k, drawing into t; puts the row's
+ * name in name (e.g. "10_fast_raster_1t") and whether its time is the wall
+ * clock (threads working together) rather than this thread's CPU time.
+ * NULL: out of memory. */
+LessonState *bench_configure(Target *t, int k, char *name, int size, bool *wall_clock);
 
 #endif

@@ -9,9 +9,10 @@
 
 #include "bench_setup.h"
 #include "fast_raster.h"
+#include "state.h"
 #include "workloads.h"
 
-static FastRaster engine;
+static LessonState engine;
 
 static int cores(void)
 {
@@ -24,10 +25,11 @@ int bench_configs(void)
     return 2;
 }
 
-bool bench_configure(Target *t, int k, char *name, int size, bool *wall_clock)
+LessonState *bench_configure(Target *t, int k, char *name, int size, bool *wall_clock)
 {
     int threads = k == 0 ? 1 : cores();
-    fast_raster_free(&engine);
+    (void)t;
+    fast_raster_free(&engine.fast);
     const char *chosen = getenv("FAST_RASTER_SIMD");
     Simd simd = simd_best();
     if (chosen && strcmp(chosen, "none") == 0)
@@ -38,8 +40,7 @@ bool bench_configure(Target *t, int k, char *name, int size, bool *wall_clock)
         simd = SIMD_PIXELS;
     engine = fast_raster(depth_setup(UNORM24, STANDARD, WORKLOAD_NEAR, WORKLOAD_FAR), simd,
                          threads, false);
-    t->depth_setup = &engine.depth;
     snprintf(name, (size_t)size, "10_fast_raster_%dt", threads);
     *wall_clock = threads > 1;
-    return true;
+    return &engine;
 }

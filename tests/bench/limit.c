@@ -94,14 +94,17 @@ static void draw_fill(Target *t, const Workload *w)
 }
 
 /* The limit's buffer holds d, cleared to +infinity as lessons 02 and 03 clear it. */
-static void clear_to_infinity(Target *t)
+static void clear_to_infinity(Target *t, LessonState *s)
 {
+    (void)s;
     size_t n = (size_t)t->width * (size_t)t->height;
     for (size_t i = 0; i < n; i++) {
         t->depth[i] = INFINITY;
         t->face[i] = NO_FACE;
     }
 }
+
+static const Rasterizer CLEAR_TO_INFINITY = {.clear = clear_to_infinity};
 
 /* Draws reps times after the warm-up into a fresh LIMIT_SIDE target, counting
  * or not. fragments: how many depth tests one drawing makes, worked out by
@@ -115,7 +118,7 @@ static bool measure(DrawFn draw, bool counting, const Workload *w, const char *w
     t.counting = counting;
     double times[MAX_REPS];
     for (int k = -BENCH_WARMUP; k < reps; k++) {
-        target_reset(&t, clear_to_infinity);
+        target_reset(&t, &CLEAR_TO_INFINITY);
         double start = now_seconds();
         draw(&t, w);
         double elapsed = now_seconds() - start;

@@ -19,10 +19,10 @@ double now_wall_seconds(void)
     return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
 }
 
-void target_reset(Target *t, void (*clear)(Target *t))
+void target_reset(Target *t, const Rasterizer *rz)
 {
     size_t n = (size_t)t->width * (size_t)t->height;
-    clear(t);
+    rz->clear(t, rz->state);
     memset(t->overdraw, 0, n * sizeof *t->overdraw);
     FragmentStats none = {0};
     t->stats = none;

@@ -19,7 +19,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
-#include "target.h"
+#include "rasterizer.h"
 #include "workloads.h"
 
 #define BENCH_WARMUP 1
@@ -46,7 +46,7 @@ double now_seconds(void);
 double now_wall_seconds(void);
 
 /* Back to the state target_init leaves: depth = clear, no face, no counts. */
-void target_reset(Target *t, void (*clear)(Target *t));
+void target_reset(Target *t, const Rasterizer *rz);
 
 /* Median, minimum and maximum of times[0 .. n-1] (n >= 1; sorts times). */
 void summarise_times(double *times, int n, double *median, double *min, double *max);

@@ -213,8 +213,10 @@ void workload_free(Workload *w)
 
 void workload_draw(const Workload *w, Target *t, const Rasterizer *rz)
 {
+    DrawContext ctx = w->ctx;
+    ctx.width = t->width, ctx.height = t->height;
     for (int i = 0; i < w->nfaces; i++)
-        rz->draw_face(t, &w->faces[i], &w->ctx);
+        rz->draw_face(t, rz->state, &w->faces[i], &ctx);
 }
 
 uint64_t depth_checksum(const Target *t)

@@ -193,9 +193,9 @@ static void faces_without_material_get_distinct_palette_colours(void **state)
  * remembers the order of the faces it was given. */
 static int drawn_order[16], drawn_count;
 
-static void record_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+static void record_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx)
 {
-    (void)ctx;
+    (void)s, (void)ctx;
     drawn_order[drawn_count++] = f->face;
     int x = (int)f->v[0].x, y = (int)f->v[0].y;
     if (x >= 0 && y >= 0 && x < t->width && y < t->height) {
@@ -206,14 +206,15 @@ static void record_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
     }
 }
 
-static double inverse(const Target *t, float stored)
+static double inverse(const LessonState *s, float stored)
 {
-    (void)t;
+    (void)s;
     return 1.0 / stored;
 }
 
-static void clear_to_zero(Target *t)
+static void clear_to_zero(Target *t, LessonState *s)
 {
+    (void)s;
     for (int i = 0; i < t->width * t->height; i++) {
         t->depth[i] = 0.0f;
         t->face[i] = NO_FACE;

@@ -154,7 +154,7 @@ static int fuzz_rasterizer(const Rasterizer *rz, const uint8_t *data, size_t siz
     double far = fuzz_double(&b);
     if (!(far > 0))
         far = INFINITY; /* most faces should get past the far plane */
-    DrawContext ctx = {0.0, far};
+    DrawContext ctx = {0.0, far, width, height};
 
     Target t;
     Error err;
@@ -175,7 +175,7 @@ static int fuzz_rasterizer(const Rasterizer *rz, const uint8_t *data, size_t siz
         ScreenFace f = {face, n, v, tris, (head & 0x80) != 0, NULL};
 
         uint64_t before = t.stats.tested;
-        rz->draw_face(&t, &f, &ctx);
+        rz->draw_face(&t, rz->state, &f, &ctx);
         uint64_t tested = t.stats.tested - before;
         if (!fuzz_corners_finite(v, n))
             fuzz_check(tested == 0, "a face with a corner that is not finite draws nothing");

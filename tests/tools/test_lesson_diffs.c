@@ -6,12 +6,16 @@
  *
  *   reading path   main.c, the taught files at the top of the lesson
  *                  directory, and the headers they include directly: at most
- *                  READING_MAX lines in all; main.c at most MAIN_MAX.
+ *                  READING_MAX lines in all (lesson 10, which teaches bins,
+ *                  blocks, SIMD and threads: READING_MAX_FAST); main.c at
+ *                  most MAIN_MAX.
  *   make diff      02 -> 03: at most 150 lines, the 1/d change.
  *                  A file the later lesson's REPLACES names is shown whole
  *                  (lesson 04's scanline.c replaces lesson 03's raster.c):
  *                  everything else of 03 -> 04 at most 80 lines, of any later
- *                  pair at most 200.
+ *                  pair at most 220 (from lesson 06 on a lesson keeps its own
+ *                  state, state.h, and a later lesson that adds to it shows
+ *                  that too).
  *
  * The diff is counted here from the output of tools/lesson-diff.sh, file by
  * file, and must agree with what `make reading` prints. Each lesson page names
@@ -33,6 +37,7 @@
 #include "test_support.h"
 
 #define READING_MAX 600
+#define READING_MAX_FAST 900
 #define MAIN_MAX 80
 #define DIFF_MAX_BYTES ((size_t)1 << 22)
 #define MAX_LESSONS 16
@@ -146,10 +151,11 @@ static void every_reading_path_fits_in_one_sitting(void **state)
             sum += lines_in_file(r[k].path[i]);
         expect_count(r[k].path_count, r[k].files, what("files on the reading path of %s", r[k].name));
         expect_count(sum, r[k].path_lines, what("lines on the reading path of %s", r[k].name));
-        if (r[k].path_lines > READING_MAX)
+        int most = strncmp(r[k].name, "10_", 3) == 0 ? READING_MAX_FAST : READING_MAX;
+        if (r[k].path_lines > most)
             fail_msg("%s: its reading path is %d lines, more than %d (make reading lists "
                      "the files): move what the lesson does not teach out of them",
-                     r[k].name, r[k].path_lines, READING_MAX);
+                     r[k].name, r[k].path_lines, most);
         expect_at_most(MAIN_MAX, r[k].main_lines, what("lines in %s's main.c", r[k].name));
         expect_at_least(1, r[k].solution_lines, what("solution lines in %s", r[k].name));
     }
@@ -209,7 +215,7 @@ static void every_lesson_diff_is_its_idea(void **state)
                      to));
         if (strcmp(from, "01") == 0)
             continue; /* lesson 02 starts the 3-D series: no budget (its page says so) */
-        int budget = strcmp(from, "02") == 0 ? 150 : strcmp(from, "03") == 0 ? 80 : 200;
+        int budget = strcmp(from, "02") == 0 ? 150 : strcmp(from, "03") == 0 ? 80 : 220;
         if (other > budget)
             fail_msg("make diff FROM=%s TO=%s is %d lines (besides %d in files shown whole), "
                      "more than its budget of %d: keep what the lesson shows but does not hand "

@@ -151,9 +151,9 @@ static void a_snapshot_builds_alone_and_draws_the_lessons_pictures(void **state)
 
     char *links = shell_expect(0, snap, "find . -type l; grep -c . FILES; "
                                         "grep -c '	lessons/10_fast_raster/' FILES");
-    /* no link; 20 files of which 11 its own */
-    if (strcmp(links, "20\n11\n") != 0)
-        fail_msg("the snapshot should hold 20 plain files, 11 of lesson 10's own:\n%s", links);
+    /* no link; 21 files of which 12 its own */
+    if (strcmp(links, "21\n12\n") != 0)
+        fail_msg("the snapshot should hold 21 plain files, 12 of lesson 10's own:\n%s", links);
     free(links);
 
     free(shell_expect(0, snap, "make CFLAGS=-O0"));
@@ -193,6 +193,34 @@ static void the_common_core_is_small_and_includes_no_harness(void **state)
     free(out);
 }
 
+/* What a lesson teaches never reaches the harness: every file at the top of
+ * a lesson's tree but main.c (the outline, which calls the harness), and
+ * every header those include, directly or not, is outside common/harness/.
+ * The compiler lists the headers (-MM); the tree is assembled afresh. */
+static void no_taught_file_includes_the_harness(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("lesson_tree_harness");
+    char command[4 * PATH_LEN];
+    snprintf(command, sizeof command,
+             "sh tools/lesson-tree.sh assemble '%s' && "
+             "for d in '%s'/[0-9][0-9]_*; do "
+             "  for f in \"$d\"/*.c \"$d\"/*.h; do "
+             "    case $f in */main.c) continue;; esac; [ -f \"$f\" ] || continue; "
+             "    cc -MM -D_POSIX_C_SOURCE=200809L -Icommon -I\"$d\" -x c \"$f\" >\"$d/.deps\" || "
+             "      { echo \"cannot list what $f includes\"; continue; }; "
+             "    tr ' \\\\' '\\n\\n' <\"$d/.deps\" | grep -q 'common/harness/' && "
+             "      echo \"${f#%s/} reaches common/harness/\"; "
+             "  done; "
+             "done; true",
+             dir, dir, dir);
+    char *out = shell_expect(0, NULL, command);
+    if (out[0] != '\0')
+        fail_msg("taught files that include the harness (it belongs to main.c and extras/):\n%s",
+                 out);
+    free(out);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -202,6 +230,7 @@ int main(void)
         cmocka_unit_test(each_lesson_builds_from_its_own_and_inherited_files),
         cmocka_unit_test(a_snapshot_builds_alone_and_draws_the_lessons_pictures),
         cmocka_unit_test(the_common_core_is_small_and_includes_no_harness),
+        cmocka_unit_test(no_taught_file_includes_the_harness),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -142,8 +142,9 @@ static bool sort_by_object(const int *object, int objects, int n, int *order, in
 }
 
 /* --bug clear-zero: every pixel to 0, the nearest depth there is. */
-static void clear_to_zero(Target *t)
+static void clear_to_zero(Target *t, LessonState *s)
 {
+    (void)s;
     size_t n = (size_t)t->width * (size_t)t->height;
     for (size_t i = 0; i < n; i++) {
         t->depth[i] = 0.0f;

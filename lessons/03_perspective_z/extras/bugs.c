@@ -8,7 +8,8 @@
 /* Each triangle of the face, with -d at its corners, through the right rule.
  * 1/d blended and inverted gives exactly -(the right d): the bug changes the
  * sign of every value the depth test sees, and nothing else. */
-static void draw_face_negated_w(Target *t, const ScreenFace *f, const DrawContext *ctx)
+static void draw_face_negated_w(Target *t, LessonState *s, const ScreenFace *f,
+                                const DrawContext *ctx)
 {
     if (!screen_face_is_finite(f))
         return; /* as draw_face: a corner that is not a number draws nothing */
@@ -19,13 +20,13 @@ static void draw_face_negated_w(Target *t, const ScreenFace *f, const DrawContex
             v[j].d = -v[j].d; /* the bug: -d where d belongs */
         }
         ScreenFace tri = screen_triangle(v, f->face);
-        draw_face(t, &tri, ctx);
+        draw_face(t, s, &tri, ctx);
     }
 }
 
-static double negated_to_depth(const Target *t, float stored)
+static double negated_to_depth(const LessonState *s, float stored)
 {
-    (void)t;
+    (void)s;
     return -(double)stored;
 }
 

@@ -42,8 +42,9 @@ static void draw_triangle_naive(Target *t, ScreenVertex a, ScreenVertex b, Scree
 
 /* As draw_face, with the guard band cutting by d, the naive rule's own idea
  * of what is linear on the screen. */
-static void draw_face_naive(Target *t, const ScreenFace *f, const DrawContext *ctx)
+static void draw_face_naive(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx)
 {
+    (void)s;
     if (!screen_face_is_finite(f))
         return;
     for (int k = 0; k < f->n - 2; k++) {

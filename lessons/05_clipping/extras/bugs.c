@@ -9,10 +9,11 @@
 
 /* Each corner divided as clip_to_screen divides it, w_c <= 0 or not, then the
  * face drawn as lesson 04 draws a face no plane cuts. */
-static void draw_face_no_clip(Target *t, const ScreenFace *f, const DrawContext *ctx)
+static void draw_face_no_clip(Target *t, LessonState *s, const ScreenFace *f,
+                              const DrawContext *ctx)
 {
     if (!f->clip) {
-        draw_face(t, f, ctx); /* a face made on the screen: nothing to divide */
+        draw_face(t, s, f, ctx); /* a face made on the screen: nothing to divide */
         return;
     }
     ScreenVertex *v = malloc((size_t)f->n * sizeof *v);
@@ -25,7 +26,7 @@ static void draw_face_no_clip(Target *t, const ScreenFace *f, const DrawContext 
     ScreenFace divided = *f;
     divided.v = v;
     divided.clip = NULL;
-    draw_face(t, &divided, ctx);
+    draw_face(t, s, &divided, ctx);
     free(v);
 }
 

@@ -8,6 +8,7 @@
 #include "harness/compare_naive.h"
 #include "harness/ladder.h"
 #include "plot.h"
+#include "state.h"
 
 enum { FLAG_FORMAT, FLAG_MAPPING, FLAG_PLOT, FLAG_COUNT };
 
@@ -82,7 +83,7 @@ static bool after_write(Run *run, Error *err)
         note_ladder_bands(run);
     if (!plot)
         return true;
-    const DepthSetup *s = run->target.depth_setup;
+    const DepthSetup *s = &run->rz->state->depth;
     return precision_plot(plot, s->near, s->far, err);
 }
 

@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "harness/cli.h"
+#include "state.h"
 
 enum { FLAG_FORMAT, FLAG_MAPPING, FLAG_OFFSET, FLAG_CLAMP, FLAG_COUNT };
 
@@ -136,14 +137,14 @@ static bool draw_without_bases(Run *run, Target *ref, Error *err)
     for (int g = 0; g < r->mesh.nfaces; g++)
         if (!is_base(&r->mesh, g))
             order[count++] = g;
-    DepthSetup plain = *run->target.depth_setup;
-    plain.bias.mesh = NULL; /* no face is offset */
-    ref->depth_setup = &plain;
-    run->rz->clear(ref);
+    LessonState plain = *run->rz->state;
+    plain.depth.bias.mesh = NULL; /* no face is offset */
+    Rasterizer unbiased = *run->rz;
+    unbiased.state = &plain;
+    unbiased.clear(ref, &plain);
     FaceCounts saved = r->counts; /* the summary counts the picture's faces only */
-    bool ok = render_faces(r, ref, run->rz, order, count, NULL, NULL, err);
+    bool ok = render_faces(r, ref, &unbiased, order, count, NULL, NULL, err);
     r->counts = saved;
-    ref->depth_setup = NULL;
     free(order);
     return ok;
 }
@@ -196,7 +197,7 @@ static bool after_write(Run *run, Error *err)
     Target ref;
     if (!draw_without_bases(run, &ref, err))
         return false;
-    const DepthBias *b = &run->target.depth_setup->bias;
+    const DepthBias *b = &run->rz->state->depth.bias;
     run_note(run, "  polygon offset on the faces in `decal`: factor %g, units %g, clamp %g",
              b->factor, b->units, b->clamp);
     run_note(run, "  each decal's share of its pixels (face: share; its pixels: where it "

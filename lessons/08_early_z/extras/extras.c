@@ -50,14 +50,15 @@ static int find_name(const char *name, const char *const *names, int n)
     return -1;
 }
 
-EarlyZ early_z_chosen(const Run *run)
+LessonState early_z_chosen(const Run *run)
 {
     const char *const *x = run->opt.extra;
-    EarlyZ z = {.depth = depth_setup(UNORM24, STANDARD, run->opt.near, run->opt.far)};
-    z.mode = x[FLAG_Z_MODE] ? (ZMode)find_name(x[FLAG_Z_MODE], MODE_NAMES, 3) : Z_EARLY;
-    z.sort = x[FLAG_SORT] ? (SortOrder)find_name(x[FLAG_SORT], SORT_NAMES, 3) : SORT_NONE;
-    z.bug_discard = x[FLAG_BUG] != NULL;
-    return z;
+    LessonState s = {.depth = depth_setup(UNORM24, STANDARD, run->opt.near, run->opt.far)};
+    EarlyZ *z = &s.early_z;
+    z->mode = x[FLAG_Z_MODE] ? (ZMode)find_name(x[FLAG_Z_MODE], MODE_NAMES, 3) : Z_EARLY;
+    z->sort = x[FLAG_SORT] ? (SortOrder)find_name(x[FLAG_SORT], SORT_NAMES, 3) : SORT_NONE;
+    z->bug_discard = x[FLAG_BUG] != NULL;
+    return s;
 }
 
 static bool write_colour(const EarlyZ *z, int width, int height, const char *path, Error *err)
@@ -75,7 +76,7 @@ static bool write_colour(const EarlyZ *z, int width, int height, const char *pat
 
 static bool after_write(Run *run, Error *err)
 {
-    const EarlyZ *z = (const EarlyZ *)run->target.depth_setup;
+    const EarlyZ *z = &run->rz->state->early_z;
     const char *colour = run->opt.extra[FLAG_COLOUR_OUT], *heat = run->opt.extra[FLAG_HEAT_OUT];
     int w = run->target.width, h = run->target.height;
     return (!colour || write_colour(z, w, h, colour, err)) &&

@@ -6,26 +6,23 @@
 #define EXTRAS_H
 
 #include "early_z.h"
+#include "state.h"
 #include "heat_map.h"
+#include "shader.h"
 #include "harness/lesson.h"
 
 extern const Extras EXTRAS;
 
-EarlyZ early_z_chosen(const Run *run); /* unorm24, standard; the mode, sort and bug */
+LessonState early_z_chosen(const Run *run); /* unorm24, standard; the mode, sort and bug */
 const char *z_mode_name(ZMode mode);
 const char *sort_name(SortOrder sort);
 
-/* The fragment shader (shader.c): the face's flat colour lit (Lambert, from
- * its normal), darkened by up to 30% by SHADER_OCTAVES octaves of value noise. */
-#define SHADER_OCTAVES 6
-Rgb shade_fragment(Rgb lit, int x, int y);
 
 /* order[0 .. nfaces-1]: mesh order, or by the mean view depth d of each face's
  * corners, nearest first (front-to-back) or last (back-to-front). */
 void sort_faces(const Render *r, SortOrder sort, int *order);
-/* Lesson 07's DEPTH_BIAS_ZBUFFER draws a face, each fragment it made handed to fragment(). */
-void draw_shaded_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
-bool early_z_begin(EarlyZ *z, Run *run, Error *err); /* the run draws through z */
+bool early_z_begin(LessonState *state, Run *run, Error *err); /* the run draws through it */
+bool draw_scene(Run *run, Error *err); /* sorted, in one or two passes */
 void early_z_free(EarlyZ *z);
 
 

@@ -1,17 +1,13 @@
 /* fragments.c: lesson 08's plumbing, shown but not taught: the order of
- * --sort (a qsort by each face's mean d), and the fragments. Lesson 07's
- * rasterizer (DEPTH_BIAS_ZBUFFER) tests and writes each fragment of a face itself; to run
- * the shader per fragment around it, unchanged, the face's box of the
- * buffers is saved first, and each pixel whose count of tests went up is a
- * fragment of the face, handed to fragment() (early_z.c). */
+ * --sort (a qsort by each face's mean d), the two passes of the prepass
+ * (pass 1, then pass 2: early_z.c's fragment() does what each means), and
+ * the shader's buffers. */
 #include "extras.h"
 
-#include <math.h>
 #include <stdlib.h>
-#include <string.h>
 
-#include "clip.h"
 #include "harness/shade.h"
+#include "state.h"
 
 typedef struct { double d; int face; } Key;
 
@@ -42,68 +38,51 @@ void sort_faces(const Render *r, SortOrder sort, int *order)
     free(keys);
 }
 
-typedef struct { int x0, y0, x1, y1; } Box; /* pixels x0 .. x1 - 1, y0 .. y1 - 1 */
-
-/* The pixels the face can touch: its clipped corners' box, a pixel wider. */
-static Box face_box(const Target *t, const ScreenFace *f)
+/* Every face in --sort's order; a prepass draws them all twice. */
+bool draw_scene(Run *run, Error *err)
 {
-    Vec4 kept[CLIP_MAX_OUT(CLIP_MAX_IN)];
-    Box all = {0, 0, t->width, t->height}, b = {t->width, t->height, 0, 0};
-    if (f->clip && f->n > CLIP_MAX_IN)
-        return all;
-    int n = f->clip ? clip_polygon(f->clip, f->n, kept) : f->n;
-    for (int k = 0; k < n; k++) {
-        ScreenVertex v = f->clip ? clip_to_screen(kept[k], t->width, t->height) : f->v[k];
-        if (!(fabs(v.x) < 1e9 && fabs(v.y) < 1e9))
-            return all;
-        b.x0 = (int)fmin(b.x0, floor(v.x) - 1), b.y0 = (int)fmin(b.y0, floor(v.y) - 1);
-        b.x1 = (int)fmax(b.x1, ceil(v.x) + 1), b.y1 = (int)fmax(b.y1, ceil(v.y) + 1);
+    Render *r = &run->render;
+    Target *t = &run->target;
+    EarlyZ *z = &run->rz->state->early_z;
+    int n = r->mesh.nfaces, *order = malloc((size_t)(n > 0 ? n : 1) * sizeof *order);
+    if (!order)
+        return error_set(err, "out of memory for the order of %d faces", n);
+    sort_faces(r, z->sort, order);
+    z->pass = z->mode == Z_PREPASS ? 1 : 0;
+    bool ok = render_faces(r, t, run->rz, order, n, inspect_after_face, &run->inspection, err);
+    if (ok && z->mode == Z_PREPASS) {
+        FaceCounts once = r->counts; /* the summary counts each face once */
+        z->pass = 2;
+        ok = render_faces(r, t, run->rz, order, n, NULL, NULL, err);
+        r->counts = once;
     }
-    b.x0 = b.x0 < 0 ? 0 : b.x0, b.y0 = b.y0 < 0 ? 0 : b.y0;
-    b.x1 = b.x1 > t->width ? t->width : b.x1, b.y1 = b.y1 > t->height ? t->height : b.y1;
-    return b;
+    for (size_t i = 0; i < (size_t)t->width * (size_t)t->height; i++)
+        z->covered += t->face[i] != NO_FACE;
+    free(order);
+    return ok;
 }
 
-void draw_shaded_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+/* The run draws through state: lesson 07's rasterizer with the shader's
+ * state, draw_scene; the shader's buffers, of the target's size, and its
+ * per-face inputs, of the mesh's. */
+bool early_z_begin(LessonState *state, Run *run, Error *err)
 {
-    EarlyZ *z = (EarlyZ *)t->depth_setup;
-    Box b = face_box(t, f);
-    size_t len = b.x1 > b.x0 ? (size_t)(b.x1 - b.x0) : 0;
-    for (int y = b.y0; y < b.y1; y++) {
-        size_t at = (size_t)y * (size_t)t->width + (size_t)b.x0;
-        memcpy(z->saved_depth + at, t->depth + at, len * sizeof *t->depth);
-        memcpy(z->saved_face + at, t->face + at, len * sizeof *t->face);
-        memcpy(z->saved_tests + at, t->overdraw + at, len * sizeof *t->overdraw);
-    }
-    DEPTH_BIAS_ZBUFFER.draw_face(t, f, ctx); /* lesson 07 draws the face */
-    bool cutout = mesh_face_in(z->mesh, f->face, "cutout");
-    Rgb lit = face_flat_colour(z->mesh, z->camera, f->face);
-    for (int y = b.y0; y < b.y1; y++)
-        for (int x = b.x0; x < b.x1; x++) {
-            size_t i = (size_t)y * (size_t)t->width + (size_t)x;
-            if (t->overdraw[i] != z->saved_tests[i])
-                fragment(z, t, i, x, y, f->face, cutout, lit);
-        }
-}
-
-/* The run draws through z: the target's depth setup, lesson 07's rasterizer
- * with draw_shaded_face, draw_scene; and z's buffers, of the target's size. */
-bool early_z_begin(EarlyZ *z, Run *run, Error *err)
-{
+    EarlyZ *z = &state->early_z;
     size_t n = (size_t)run->target.width * (size_t)run->target.height;
-    run->target.depth_setup = &z->depth;
-    z->rasterizer = *run->rz;
-    z->rasterizer.draw_face = draw_shaded_face;
-    run->rz = &z->rasterizer;
+    int nfaces = run->render.mesh.nfaces;
+    size_t faces = nfaces > 0 ? (size_t)nfaces : 1;
+    run->rasterizer.state = state;
     run->draw = draw_scene;
-    z->mesh = &run->render.mesh;
-    z->camera = &run->render.camera;
+    bool *cutout = malloc(faces * sizeof *cutout);
+    Rgb *lit = malloc(faces * sizeof *lit);
+    z->cutout = cutout, z->lit = lit;
     z->colour = calloc(n, sizeof *z->colour);
     z->shade_count = calloc(n, sizeof *z->shade_count);
-    z->saved_depth = malloc(n * sizeof *z->saved_depth);
-    z->saved_face = malloc(n * sizeof *z->saved_face);
-    z->saved_tests = malloc(n * sizeof *z->saved_tests);
-    if (z->colour && z->shade_count && z->saved_depth && z->saved_face && z->saved_tests) {
+    if (cutout && lit && z->colour && z->shade_count) {
+        for (int f = 0; f < nfaces; f++) {
+            cutout[f] = mesh_face_in(&run->render.mesh, f, "cutout");
+            lit[f] = face_flat_colour(&run->render.mesh, &run->render.camera, f);
+        }
         for (size_t i = 0; i < n; i++)
             z->colour[i] = FLAT_BACKGROUND;
         return true;
@@ -116,9 +95,7 @@ void early_z_free(EarlyZ *z)
 {
     free(z->colour);
     free(z->shade_count);
-    free(z->saved_depth);
-    free(z->saved_face);
-    free(z->saved_tests);
-    z->colour = NULL, z->shade_count = NULL, z->saved_depth = NULL;
-    z->saved_face = NULL, z->saved_tests = NULL;
+    free((void *)z->cutout);
+    free((void *)z->lit);
+    z->colour = NULL, z->shade_count = NULL, z->cutout = NULL, z->lit = NULL;
 }

@@ -1,6 +1,6 @@
 /* shader.c: lesson 08's fragment shader, a real cost per fragment: the
  * face's Lambert colour times SHADER_OCTAVES octaves of value noise. */
-#include "extras.h"
+#include "shader.h"
 
 #include <math.h>
 

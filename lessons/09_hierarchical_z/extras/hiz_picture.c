@@ -52,9 +52,9 @@ static void draw_legend(LegendBand *b, const void *ctx)
     legend_text(b, "far plane (a pixel not drawn)", white);
 }
 
-bool write_hiz_picture(const Target *t, const char *path, Error *err)
+bool write_hiz_picture(const Target *t, const LessonState *s, const char *path, Error *err)
 {
-    const HierarchicalZ *h = t->hiz;
+    const HierarchicalZ *h = s->hiz;
     int w = t->width, hgt = t->height;
     float *d = malloc((size_t)w * (size_t)hgt * sizeof *d);
     Image im, tiles;
@@ -64,7 +64,7 @@ bool write_hiz_picture(const Target *t, const char *path, Error *err)
     for (int y = 0; y < hgt; y++)
         for (int x = 0; x < w; x++) {
             int k = y / h->tile * h->tiles_x + x / h->tile;
-            d[(size_t)y * (size_t)w + (size_t)x] = (float)stored_to_depth(t, h->far[k]);
+            d[(size_t)y * (size_t)w + (size_t)x] = (float)stored_to_depth(s, h->far[k]);
         }
     for (size_t i = 0; i < (size_t)w * (size_t)hgt; i++)
         if (isfinite(d[i]))

@@ -10,6 +10,7 @@
 
 #include "clip.h"
 #include "guard_band.h"
+#include "state.h"
 
 #define S ((int64_t)SUBPIXEL_ONE)
 #define HALF_PIXEL ((int64_t)SUBPIXEL_HALF)
@@ -95,12 +96,12 @@ void bins_free(Bins *b)
 }
 
 /* The bins of target t, drawing what waits for another target first. */
-Bins *bins_of(Target *t)
+Bins *bins_of(Target *t, LessonState *s)
 {
-    FastRaster *fr = (FastRaster *)t->depth_setup;
+    FastRaster *fr = &s->fast;
     Bins *b = fr->bins;
     if (b && b->target != t && b->npoly > 0)
-        fast_finish((Target *)b->target);
+        fast_finish((Target *)b->target, s);
     int tiles_x = (t->width + TILE_SIZE - 1) / TILE_SIZE;
     int tiles_y = (t->height + TILE_SIZE - 1) / TILE_SIZE;
     if (!b || b->tiles_x != tiles_x || b->tiles_y != tiles_y) {
@@ -116,10 +117,10 @@ Bins *bins_of(Target *t)
     return b;
 }
 
-FastRaster fast_raster(DepthSetup depth, Simd simd, int threads, bool count)
+LessonState fast_raster(DepthSetup depth, Simd simd, int threads, bool count)
 {
-    return (FastRaster){.depth = depth, .simd = simd, .threads = threads, .count = count,
-                        .keep = ~(uint64_t)0};
+    return (LessonState){.depth = depth, .fast = {.simd = simd, .threads = threads,
+                                                  .count = count, .keep = ~(uint64_t)0}};
 }
 
 void fast_raster_free(FastRaster *fr)
@@ -136,7 +137,8 @@ void fast_raster_free(FastRaster *fr)
  * and it is no decal: what lesson 07 does with it, without its copies. Its
  * plane from its corners as clip_to_screen puts them (triangle_plane), its
  * coverage from the face's own (draw_clipped_face). False: not so simple. */
-static bool draw_simple_triangle(Target *t, const ScreenFace *f, const Tri *tri, double far)
+static bool draw_simple_triangle(Target *t, LessonState *s, const ScreenFace *f, const Tri *tri,
+                                 double far)
 {
     ScreenVertex v[3], on[3];
     for (int j = 0; j < 3; j++) {
@@ -153,33 +155,32 @@ static bool draw_simple_triangle(Target *t, const ScreenFace *f, const Tri *tri,
     if (!guard_band_contains(on, 3, t->width, t->height) ||
         !guard_band_contains(v, 3, t->width, t->height))
         return false;
-    t->depth_setup->plane = depth_plane(t->depth_setup, on);
-    draw_polygon(t, v, 3, f->face, far); /* refused: lesson 07 draws nothing either */
+    Primitive p = {.target = t, .state = s, .face = f->face, .plane = depth_plane(&s->depth, on)};
+    draw_polygon(&p, v, 3, far); /* refused: lesson 07 draws nothing either */
     return true;
 }
 
 /* A face with threads: held back; else (or when it cannot be) set up now. */
-void draw_fast_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+void draw_fast_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx)
 {
-    FastRaster *fr = (FastRaster *)t->depth_setup;
-    if (fr->count || fr->threads < 2 || fr->set_up_only || !hold_face(t, f, ctx))
-        set_up_face(t, f, ctx);
+    FastRaster *fr = &s->fast;
+    if (fr->count || fr->threads < 2 || fr->set_up_only || !hold_face(t, s, f, ctx))
+        set_up_face(t, s, f, ctx);
 }
 
 /* A face: a decal as lesson 07 draws it, any other triangle by triangle
  * (lesson 07's draw_triangles for a triangle that is not simple). */
-void set_up_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+void set_up_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx)
 {
     static const Tri first = {{0, 1, 2}};
-    FastRaster *fr = (FastRaster *)t->depth_setup;
-    const Mesh *m = fr->depth.bias.mesh;
-    fr->keep = m && mesh_face_in(m, f->face, "cutout") ? CUTOUT_KEEPS : ~(uint64_t)0;
+    const Mesh *m = s->depth.bias.mesh;
+    s->fast.keep = m && mesh_face_in(m, f->face, "cutout") ? CUTOUT_KEEPS : ~(uint64_t)0;
     if (m && mesh_face_in(m, f->face, "decal")) {
-        DEPTH_BIAS_ZBUFFER.draw_face(t, f, ctx);
+        DEPTH_BIAS_ZBUFFER.draw_face(t, s, f, ctx);
         return;
     }
     for (int k = 0; k < f->n - 2; k++) {
-        if (draw_simple_triangle(t, f, &f->tris[k], ctx->far))
+        if (draw_simple_triangle(t, s, f, &f->tris[k], ctx->far))
             continue;
         ScreenVertex v[3];
         Vec4 clip[3];
@@ -189,16 +190,11 @@ void set_up_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
         }
         ScreenFace one = {.face = f->face, .n = 3, .v = v, .tris = &first, .convex = true,
                           .clip = f->clip ? clip : NULL};
-        draw_triangles(t, &one, ctx);
+        draw_triangles(t, s, &one, ctx, 0.0f);
     }
 }
 
 /* ---- Lesson 04's corners and walk -------------------------------------- */
-
-void draw_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
-{
-    draw_face_as_polygons(t, f, ctx, draw_polygon);
-}
 
 bool corner_in_range(const ScreenVertex *v)
 {
@@ -331,12 +327,15 @@ void walk_in_tile(TileWork *w, const Poly *p, const Corner *c)
 
 /* ---- One fragment; a block's farthest value ---------------------------- */
 
-/* The fragment at (x, y): z_w in lesson 06's order, its test, its write
- * unless a cutout discards it; counted by target_record when counting. */
+/* The fragment at (x, y): discarded where a cutout has a hole (as lesson
+ * 08's late-Z: never tested), else z_w in lesson 06's order, its test and
+ * its write; counted by target_record when counting. */
 bool test_pixel(TileWork *w, const BlockDepth *d, int x, int y)
 {
     Target *t = w->t;
     size_t i = (size_t)y * (size_t)t->width + (size_t)x;
+    if (!(d->keep >> ((y % BLOCK_SIZE) * BLOCK_SIZE + x % BLOCK_SIZE) & 1))
+        return false;
     float z_w = d->a0 + d->gx * (float)x + d->gy * (float)y + d->offset;
     float value = encode_depth(d->format, z_w), stored = t->depth[i];
     bool passed = d->reversed ? value > stored : value < stored;
@@ -344,48 +343,49 @@ bool test_pixel(TileWork *w, const BlockDepth *d, int x, int y)
         target_record(t, i, d->face, value, stored, passed);
     else
         w->stats.tested++, w->stats.passed += passed;
-    if (passed && (d->keep >> ((y % BLOCK_SIZE) * BLOCK_SIZE + x % BLOCK_SIZE) & 1)) {
+    if (passed) {
         t->depth[i] = value;
         t->face[i] = d->face;
     }
     return passed;
 }
 
-BlockDepth block_depth(const FastRaster *fr, int face, bool *plain)
+BlockDepth block_depth(const Primitive *p, bool *plain)
 {
-    const DepthSetup *s = &fr->depth;
-    BlockDepth d = {s->plane.a0, s->plane.gx, s->plane.gy, s->offset,
+    const DepthSetup *s = &p->state->depth;
+    BlockDepth d = {p->plane.a0, p->plane.gx, p->plane.gy, p->offset,
                     s->format == UNORM16 ? 65535.0f : s->format == UNORM24 ? 16777215.0f : 0,
-                    s->mapping == REVERSED, face, fr->keep, s->format};
+                    s->mapping == REVERSED, p->face, p->state->fast.keep, s->format};
     *plain = !(isfinite(d.a0) && isfinite(d.gx) && isfinite(d.gy) && isfinite(d.offset));
     return d;
 }
 
 /* ---- Hierarchical Z, lesson 09's ---------------------------------------- */
 
-DepthSetup plane_setup(const BlockDepth *d)
+Primitive plane_of(const TileWork *w, const BlockDepth *d)
 {
-    return (DepthSetup){.format = d->format, .mapping = d->reversed ? REVERSED : STANDARD,
-                        .plane = {d->a0, d->gx, d->gy}, .offset = d->offset};
+    return (Primitive){.target = w->t, .state = w->s, .face = d->face,
+                       .plane = {d->a0, d->gx, d->gy}, .offset = d->offset};
 }
 
 /* A thread's work: its own copy of the tile buffer's counts (hiz_skips adds
  * to them), the buffer itself shared: no two threads draw the same tile. A
  * tile buffer of other tiles than blocks is not used. */
-void tile_work_begin(TileWork *w, Target *t, const FastRaster *fr)
+void tile_work_begin(TileWork *w, Target *t, LessonState *s)
 {
-    *w = (TileWork){.t = t, .fr = fr, .k = kernels_of(fr->count ? SIMD_NONE : fr->simd)};
-    w->view = *t;
-    w->view.hiz = t->hiz && t->hiz->tile == BLOCK_SIZE ? &w->hiz : NULL;
-    if (w->view.hiz)
-        w->hiz = *t->hiz, w->hiz.tiles_tested = w->hiz.tiles_skipped = 0;
+    const FastRaster *fr = &s->fast;
+    *w = (TileWork){.t = t, .s = s, .fr = fr, .k = kernels_of(fr->count ? SIMD_NONE : fr->simd)};
+    w->hiz = s->hiz && s->hiz->tile == BLOCK_SIZE ? &w->own : NULL;
+    if (w->hiz)
+        w->own = *s->hiz, w->own.tiles_tested = w->own.tiles_skipped = 0;
 }
 
 void tile_work_end(TileWork *w)
 {
     Target *t = w->t;
-    if (w->view.hiz)
-        t->hiz->tiles_tested += w->hiz.tiles_tested, t->hiz->tiles_skipped += w->hiz.tiles_skipped;
+    HierarchicalZ *h = w->s->hiz;
+    if (w->hiz)
+        h->tiles_tested += w->own.tiles_tested, h->tiles_skipped += w->own.tiles_skipped;
     if (!t->counting)
         return;
     t->stats.tested += w->stats.tested;
@@ -395,10 +395,10 @@ void tile_work_end(TileWork *w)
 
 void tile_read_again(TileWork *w)
 {
-    HierarchicalZ *h = w->view.hiz;
+    HierarchicalZ *h = w->hiz;
     for (int y0 = w->ty0; h && y0 < w->ty1; y0 += BLOCK_SIZE)
         for (int x0 = w->tx0; x0 < w->tx1; x0 += BLOCK_SIZE)
-            hiz_read_tile(h, w->t, y0 / BLOCK_SIZE * h->tiles_x + x0 / BLOCK_SIZE);
+            hiz_read_tile(h, &w->s->depth, w->t, y0 / BLOCK_SIZE * h->tiles_x + x0 / BLOCK_SIZE);
 }
 
 uint64_t long_edge_coverage(const EdgeFn *e, int64_t at)
@@ -457,8 +457,8 @@ void draw_pixels(TileWork *w, const Poly *p, const EdgeFn *e)
 }
 
 /* Nothing waits any more: the picture starts again. */
-void clear_fast(Target *t)
+void clear_fast(Target *t, LessonState *s)
 {
-    bins_empty(((FastRaster *)t->depth_setup)->bins);
-    hiz_clear(t);
+    bins_empty(s->fast.bins);
+    hiz_clear(t, s);
 }

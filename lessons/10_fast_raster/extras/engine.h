@@ -33,32 +33,32 @@ struct Bins {
 };
 
 typedef struct { /* what one thread needs to draw a tile */
-    Target *t; const FastRaster *fr; const BlockKernels *k;
+    Target *t; LessonState *s; const FastRaster *fr; const BlockKernels *k;
     FragmentStats stats;
     int tx0, ty0, tx1, ty1; /* its pixels on the screen */
-    Target view;            /* t, but view.hiz is this thread's: */
-    HierarchicalZ hiz;      /* t's tile buffer, with this thread's counts */
+    HierarchicalZ *hiz;     /* &own, or NULL: none */
+    HierarchicalZ own;      /* the tile buffer, with this thread's counts */
 } TileWork;
 
 uint64_t popcount(uint64_t mask);
 int64_t snap(double pixels); /* lesson 04's floor(pixels S + 1/2), without a call */
 
 /* engine.c: bins, set-up, lesson 04's walk, a fragment in plain C. */
-Bins *bins_of(Target *t);
+Bins *bins_of(Target *t, LessonState *s);
 bool bins_room(Bins *b, const Poly *p, int n); /* for p, of n corners */
 void bins_empty(Bins *b); /* and the bins chained after it, unchained */
 bool tile_busy(const Bins *b, int tile); /* a polygon in it, in b or after */
-void draw_fast_face(Target *t, const ScreenFace *f, const DrawContext *ctx);
-void set_up_held_faces(Target *t); /* held.c: by the threads, into chained bins */
-/* The face's plane and format from t's setup; plain: not finite. */
-BlockDepth block_depth(const FastRaster *fr, int face, bool *plain);
+void draw_fast_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx);
+void set_up_held_faces(Target *t, LessonState *s); /* held.c: by the threads, in chained bins */
+/* p's plane and format; plain: not finite. */
+BlockDepth block_depth(const Primitive *p, bool *plain);
 bool corner_in_range(const ScreenVertex *v);
 void corners_on_plane(Corner *c, const ScreenVertex *v, int n);
 void corners_range(const Corner *c, int n, Corner *lo, Corner *hi); /* each least, largest */
 void walk_in_tile(TileWork *w, const Poly *p, const Corner *c);
 bool test_pixel(TileWork *w, const BlockDepth *d, int x, int y);
-DepthSetup plane_setup(const BlockDepth *d); /* for hiz_bound: d's plane, format, mapping */
-void tile_work_begin(TileWork *w, Target *t, const FastRaster *fr); /* the view, the kernels */
+Primitive plane_of(const TileWork *w, const BlockDepth *d); /* for hiz_bound: d's plane */
+void tile_work_begin(TileWork *w, Target *t, LessonState *s); /* the tile buffer, kernels */
 void tile_work_end(TileWork *w); /* its counts added to t's */
 void tile_read_again(TileWork *w); /* every block of the tile, after lesson 04's walk */
 uint64_t box_mask(int left, int right, int top, int bottom); /* of a block, each in 0..8 */
@@ -66,6 +66,6 @@ typedef struct { int x, y; uint64_t box; } Window; /* 8 x 8 pixels at (x, y), of
 int windows_of(const TileWork *w, const Poly *p, Window win[4]); /* 0: p larger */
 void draw_pixels(TileWork *w, const Poly *p, const EdgeFn *e); /* --simd pixels */
 uint64_t long_edge_coverage(const EdgeFn *e, int64_t at); /* at: e at the block's first */
-void clear_fast(Target *t); /* and lesson 09's hiz_clear */
+void clear_fast(Target *t, LessonState *s); /* and lesson 09's hiz_clear */
 
 #endif

@@ -47,9 +47,10 @@ const char *simd_name(Simd simd)
     return SIMD_NAMES[simd];
 }
 
-void print_engine(const Target *t)
+void print_engine(const Target *t, const LessonState *s)
 {
-    const FastRaster *fr = (const FastRaster *)t->depth_setup;
+    const FastRaster *fr = &s->fast;
+    (void)t;
     printf("  drawn in tiles of %d x %d pixels, ", TILE_SIZE, TILE_SIZE);
     if (fr->simd == SIMD_PIXELS)
         printf("pixel by pixel (no blocks)");
@@ -57,9 +58,9 @@ void print_engine(const Target *t)
         printf("blocks of %d x %d, SIMD %s", BLOCK_SIZE, BLOCK_SIZE, simd_name(fr->simd));
     printf(", %d thread%s%s\n", fr->threads, fr->threads == 1 ? "" : "s",
            fr->count ? " (counting: plain C, one thread)" : "");
-    if (t->hiz && !fr->count)
+    if (s->hiz && !fr->count)
         printf("  hierarchical Z, %dx%d tiles (one per block): tiles tested %llu, skipped %llu\n",
-               t->hiz->tile, t->hiz->tile, t->hiz->tiles_tested, t->hiz->tiles_skipped);
+               s->hiz->tile, s->hiz->tile, s->hiz->tiles_tested, s->hiz->tiles_skipped);
 }
 
 static int find_name(const char *name, const char *const *names, int n)
@@ -91,7 +92,7 @@ static int cores(void)
     return n < 1 ? 1 : n > MAX_THREADS ? MAX_THREADS : (int)n;
 }
 
-FastRaster fast_chosen(const Run *run)
+LessonState fast_chosen(const Run *run)
 {
     const char *const *x = run->opt.extra;
     int format = x[FLAG_FORMAT] ? find_name(x[FLAG_FORMAT], FORMAT_NAMES, 3) : UNORM24;

@@ -7,12 +7,13 @@
 #include "fast_raster.h"
 #include "hierarchical_z.h"
 #include "harness/lesson.h"
+#include "state.h"
 
 extern const Extras EXTRAS;
 
 /* The run's engine: SIMD, threads, counting, and its depth buffer. */
-FastRaster fast_chosen(const Run *run);
+LessonState fast_chosen(const Run *run);
 const char *simd_name(Simd simd);
-void print_engine(const Target *t); /* how the picture was drawn */
+void print_engine(const Target *t, const LessonState *s); /* how the picture was drawn */
 
 #endif

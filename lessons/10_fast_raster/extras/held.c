@@ -12,6 +12,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "state.h"
+
 #define HOLD_MAX (1 << 16) /* faces held before they are drawn: memory stays small */
 #define RUNS_MAX 64
 
@@ -25,16 +27,17 @@ struct Held {
     Bins *run[RUNS_MAX]; /* each run's bins, kept from one finish to the next */
 };
 
-typedef struct { Target *t; Held *h; size_t lo, hi; int k; } Run;
+typedef struct { Target *t; LessonState *s; Held *h; size_t lo, hi; int k; } Run;
 
-bool hold_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
+/* False: it cannot be held (set up now). */
+bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx)
 {
-    FastRaster *fr = (FastRaster *)t->depth_setup;
+    FastRaster *fr = &s->fast;
     if (!fr->held && !(fr->held = calloc(1, sizeof *fr->held)))
         return false;
     Held *h = fr->held;
     if (h->nface >= HOLD_MAX)
-        fast_finish(t);
+        fast_finish(t, s);
     void *face = h->face, *v = h->v, *clip = h->clip, *tri = h->tri;
     size_t n = (size_t)f->n;
     bool ok = grow_array(&face, &h->cap_face, h->nface + 1, sizeof *h->face) &&
@@ -43,7 +46,7 @@ bool hold_face(Target *t, const ScreenFace *f, const DrawContext *ctx)
               grow_array(&tri, &h->cap_tri, h->ntri + n - 2, sizeof *h->tri);
     h->face = face, h->v = v, h->clip = clip, h->tri = tri;
     if (!ok) {
-        fast_finish(t); /* what was held, first: then this face is set up now */
+        fast_finish(t, s); /* what was held, first: then this face is set up now */
         return false;
     }
     memcpy(h->v + h->nv, f->v, n * sizeof *f->v);
@@ -61,33 +64,31 @@ static void *set_up_run(void *arg)
 {
     Run *r = arg;
     Held *h = r->h;
-    FastRaster sub = *(FastRaster *)r->t->depth_setup;
-    Target t = *r->t;
-    sub.bins = h->run[r->k], sub.held = NULL, sub.set_up_only = true;
-    t.depth_setup = &sub.depth;
+    LessonState sub = *r->s;
+    sub.fast.bins = h->run[r->k], sub.fast.held = NULL, sub.fast.set_up_only = true;
     for (size_t i = r->lo; i < r->hi; i++) {
         const HeldFace *g = &h->face[i];
         ScreenFace f = {.face = g->face, .n = g->n, .v = h->v + g->first,
                         .tris = h->tri + g->first_tri, .convex = g->convex,
                         .clip = g->clipped ? h->clip + g->first : NULL};
-        set_up_face(&t, &f, &h->ctx);
+        set_up_face(r->t, &sub, &f, &h->ctx);
     }
-    h->run[r->k] = sub.bins;
+    h->run[r->k] = sub.fast.bins;
     return NULL;
 }
 
-void set_up_held_faces(Target *t)
+void set_up_held_faces(Target *t, LessonState *s)
 {
-    FastRaster *fr = (FastRaster *)t->depth_setup;
+    FastRaster *fr = &s->fast;
     Held *h = fr->held;
-    if (!h || h->nface == 0 || !bins_of(t))
+    if (!h || h->nface == 0 || !bins_of(t, s))
         return;
     int runs = fr->threads < RUNS_MAX ? fr->threads : RUNS_MAX;
     Run r[RUNS_MAX];
     pthread_t id[RUNS_MAX];
     bool started[RUNS_MAX] = {false};
     for (int k = 0; k < runs; k++) {
-        r[k] = (Run){t, h, h->nface * (size_t)k / (size_t)runs,
+        r[k] = (Run){t, s, h, h->nface * (size_t)k / (size_t)runs,
                      h->nface * (size_t)(k + 1) / (size_t)runs, k};
         started[k] = k > 0 && pthread_create(&id[k], NULL, set_up_run, &r[k]) == 0;
     }

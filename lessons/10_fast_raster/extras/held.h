@@ -5,8 +5,8 @@
 
 #include "engine.h"
 
-void set_up_face(Target *t, const ScreenFace *f, const DrawContext *ctx); /* now */
-bool hold_face(Target *t, const ScreenFace *f, const DrawContext *ctx);  /* false: cannot */
+void set_up_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx); /* now */
+bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx);
 void held_free(FastRaster *fr);
 void bins_free(Bins *b);
 /* Room for need items of size bytes in *items, of *cap; false (nothing changed) without. */

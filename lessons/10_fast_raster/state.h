@@ -1,0 +1,16 @@
+/* state.h: what the lesson keeps besides the target, handed to its
+ * rasterizer's functions (rasterizer.h): the depth buffer's format and
+ * mapping, chosen once before the clear, then what each lesson adds. */
+#ifndef STATE_H
+#define STATE_H
+
+#include "fast_raster.h"
+#include "hierarchical_z.h"
+
+struct LessonState {
+    DepthSetup depth;
+    FastRaster fast;
+    HierarchicalZ *hiz; /* one tile per block, or NULL: none */
+};
+
+#endif
