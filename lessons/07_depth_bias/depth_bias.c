@@ -1,9 +1,9 @@
 /* depth_bias.c: lesson 07, depth bias (polygon offset), step by step
- * (depth_format.h, docs/07_depth_bias.md). A decal and its base have the same
+ * (depth_bias.h, docs/07_depth_bias.md). A decal and its base have the same
  * z_w on paper, but each triangle's plane is set up from its own corners and
  * rounded on its own (lesson 06): either can come out nearer. So every
  * fragment of the decal moves by o toward the camera. */
-#include "depth_format.h"
+#include "depth_bias.h"
 
 #include <math.h>
 
@@ -77,13 +77,14 @@ static void draw_biased_face(Target *t, LessonState *state, const ScreenFace *f,
                              const DrawContext *ctx)
 {
     const DepthSetup *s = &state->depth;
+    const DepthBias *bias = &state->bias;
     ScreenVertex v[CLIP_MAX_OUT(CLIP_MAX_IN)];
     float o = 0;
     int n;
-    if (s->bias.mesh && mesh_face_in(s->bias.mesh, f->face, "decal") &&
+    if (bias->mesh && mesh_face_in(bias->mesh, f->face, "decal") &&
         (n = face_on_screen(f, ctx->width, ctx->height, v)) >= 3) {
         DepthPlane p = depth_plane(s, v);
-        o = (float)polygon_offset(&s->bias, depth_slope(&p), resolvable_difference(s, v, n));
+        o = (float)polygon_offset(bias, depth_slope(&p), resolvable_difference(s, v, n));
     }
     draw_triangles(t, state, f, ctx, o);
 }

@@ -8,10 +8,10 @@
  * each decal's share of its pixels) is in extras/. */
 #include <stdio.h>
 
-#include "depth_format.h"
-#include "state.h"
+#include "depth_bias.h"
 #include "extras/extras.h"
 #include "harness/lesson.h"
+#include "state.h"
 
 /* How far apart two surfaces must be to be told apart, at a few distances. */
 static void print_depth_steps(const Target *t, const LessonState *state)
@@ -44,7 +44,7 @@ int main(int argc, char **argv)
     int status = run_load(&run, &LESSON, argc, argv); /* load: the command line, the scene */
     if (status != RUN_GO)
         return status;
-    LessonState state = {depth_chosen(&run)};         /* --depth-format, --depth-mapping */
+    LessonState state = depth_chosen(&run);           /* the depth flags, the bias's */
     run.rasterizer.state = &state;                     /* the buffer's format and mapping */
     run.rz->clear(&run.target, run.rz->state);         /* clear: to the far plane, 1 or 0 */
     if (run_draw(&run) &&                              /* draw: clip, divide, draw_face */

@@ -4,10 +4,12 @@
 #ifndef STATE_H
 #define STATE_H
 
+#include "depth_bias.h"
 #include "early_z.h"
 
 struct LessonState {
     DepthSetup depth;
+    DepthBias bias;
     EarlyZ early_z;
 };
 

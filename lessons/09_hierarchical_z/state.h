@@ -4,11 +4,13 @@
 #ifndef STATE_H
 #define STATE_H
 
+#include "depth_bias.h"
 #include "early_z.h"
 #include "hierarchical_z.h"
 
 struct LessonState {
     DepthSetup depth;
+    DepthBias bias;
     EarlyZ early_z;
     HierarchicalZ *hiz; /* NULL: none, every covered pixel tested */
 };

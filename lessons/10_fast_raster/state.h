@@ -4,11 +4,13 @@
 #ifndef STATE_H
 #define STATE_H
 
+#include "depth_bias.h"
 #include "fast_raster.h"
 #include "hierarchical_z.h"
 
 struct LessonState {
     DepthSetup depth;
+    DepthBias bias;
     FastRaster fast;
     HierarchicalZ *hiz; /* one tile per block, or NULL: none */
 };

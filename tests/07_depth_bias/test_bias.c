@@ -15,7 +15,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "depth_format.h"
+#include "depth_bias.h"
 #include "scanline.h"
 #include "state.h"
 #include "test_support.h"
@@ -137,7 +137,7 @@ static Target one_pixel(LessonState *s)
 static void offset_moves_the_decal_in_front_of_its_base(void **state)
 {
     (void)state;
-    LessonState s = {depth_setup(UNORM24, STANDARD, NEAR, FAR)};
+    LessonState s = {.depth = depth_setup(UNORM24, STANDARD, NEAR, FAR)};
     float inv_d = (float)(1.0 / 7.0);
     Target t = one_pixel(&s);
     Primitive base = {.target = &t, .state = &s, .face = 0,

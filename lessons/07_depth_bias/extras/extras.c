@@ -72,7 +72,7 @@ static bool parse_offset(const char *s, double *factor, double *units, Error *er
     return ok;
 }
 
-DepthSetup depth_chosen(const Run *run)
+LessonState depth_chosen(const Run *run)
 {
     const char *const *x = run->opt.extra;
     int format = x[FLAG_FORMAT] ? find_name(x[FLAG_FORMAT], FORMAT_NAMES, 3) : UNORM24;
@@ -80,7 +80,8 @@ DepthSetup depth_chosen(const Run *run)
     /* --far inf, which only the reversed mapping takes, stands as FAR_AT_INFINITY
      * in clip space; a finite far that large is finite in the standard one. */
     double far = mapping == REVERSED && run->opt.far >= FAR_AT_INFINITY ? INFINITY : run->opt.far;
-    DepthSetup s = depth_setup((DepthFormat)format, (DepthMapping)mapping, run->opt.near, far);
+    LessonState s = {.depth = depth_setup((DepthFormat)format, (DepthMapping)mapping,
+                                          run->opt.near, far)};
     Error ignored; /* choose() has checked both flags */
     if (x[FLAG_OFFSET])
         parse_offset(x[FLAG_OFFSET], &s.bias.factor, &s.bias.units, &ignored);
@@ -138,7 +139,7 @@ static bool draw_without_bases(Run *run, Target *ref, Error *err)
         if (!is_base(&r->mesh, g))
             order[count++] = g;
     LessonState plain = *run->rz->state;
-    plain.depth.bias.mesh = NULL; /* no face is offset */
+    plain.bias.mesh = NULL; /* no face is offset */
     Rasterizer unbiased = *run->rz;
     unbiased.state = &plain;
     unbiased.clear(ref, &plain);
@@ -197,7 +198,7 @@ static bool after_write(Run *run, Error *err)
     Target ref;
     if (!draw_without_bases(run, &ref, err))
         return false;
-    const DepthBias *b = &run->rz->state->depth.bias;
+    const DepthBias *b = &run->rz->state->bias;
     run_note(run, "  polygon offset on the faces in `decal`: factor %g, units %g, clamp %g",
              b->factor, b->units, b->clamp);
     run_note(run, "  each decal's share of its pixels (face: share; its pixels: where it "

@@ -6,10 +6,11 @@
 
 #include "depth_format.h"
 #include "harness/lesson.h"
+#include "state.h"
 
 extern const Extras EXTRAS;
 
-DepthSetup depth_chosen(const Run *run); /* format, mapping, near, far and bias of the run */
+LessonState depth_chosen(const Run *run); /* format, mapping, near, far and bias of the run */
 const char *format_name(DepthFormat format);
 const char *mapping_name(DepthMapping mapping);
 

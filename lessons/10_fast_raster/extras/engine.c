@@ -173,7 +173,7 @@ void draw_fast_face(Target *t, LessonState *s, const ScreenFace *f, const DrawCo
 void set_up_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx)
 {
     static const Tri first = {{0, 1, 2}};
-    const Mesh *m = s->depth.bias.mesh;
+    const Mesh *m = s->bias.mesh;
     s->fast.keep = m && mesh_face_in(m, f->face, "cutout") ? CUTOUT_KEEPS : ~(uint64_t)0;
     if (m && mesh_face_in(m, f->face, "decal")) {
         DEPTH_BIAS_ZBUFFER.draw_face(t, s, f, ctx);

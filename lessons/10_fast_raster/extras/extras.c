@@ -103,15 +103,17 @@ LessonState fast_chosen(const Run *run)
     DepthSetup s = depth_setup((DepthFormat)format, (DepthMapping)mapping, run->opt.near, far);
     Error ignored; /* choose() has checked every flag */
     long threads = cores();
-    if (x[FLAG_OFFSET])
-        parse_offset(x[FLAG_OFFSET], &s.bias.factor, &s.bias.units, &ignored);
-    if (x[FLAG_CLAMP])
-        parse_double("--offset-clamp", x[FLAG_CLAMP], &s.bias.clamp, &ignored);
     if (x[FLAG_THREADS])
         parse_int("--threads", x[FLAG_THREADS], 1, MAX_THREADS, &threads, &ignored);
-    s.bias.mesh = &run->render.mesh;
     Simd simd = x[FLAG_SIMD] ? (Simd)find_name(x[FLAG_SIMD], SIMD_NAMES, 4) : simd_best();
-    return fast_raster(s, simd, (int)threads, run->opt.overdraw_out || run->opt.trace_set);
+    LessonState state = fast_raster(s, simd, (int)threads,
+                                    run->opt.overdraw_out || run->opt.trace_set);
+    if (x[FLAG_OFFSET])
+        parse_offset(x[FLAG_OFFSET], &state.bias.factor, &state.bias.units, &ignored);
+    if (x[FLAG_CLAMP])
+        parse_double("--offset-clamp", x[FLAG_CLAMP], &state.bias.clamp, &ignored);
+    state.bias.mesh = &run->render.mesh;
+    return state;
 }
 
 static bool choose(Run *run, Error *err)
