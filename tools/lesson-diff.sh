@@ -70,5 +70,5 @@ for f in $( (ls "$from"; ls "$to") | sort -u); do
         /^(\+\+\+|---) / { next }
         /^\+/ { a++ } /^-/ { r++ }
         END { printf "%d %d", a, r }') || true
-    echo "$counts $f"
+    [ "$counts" = "0 0" ] || echo "$counts $f" # a file both take unchanged is no step
 done

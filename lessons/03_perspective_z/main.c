@@ -1,11 +1,9 @@
-/* main.c: lesson 03, perspective-correct depth (docs/03_perspective_z.md).
- *
- * The outline of the program. What this lesson teaches is in raster.c: clear
- * the depth buffer, then draw every face, keeping per pixel the nearest
- * fragment. Everything around it (the command line, the scenes, the pictures,
- * the tools that watch the depth test) is common/harness/, reached through lesson.h;
- * what the lesson shows but does not teach (--depth-interp naive,
- * --compare-naive, --bug) is in extras/. */
+/* main.c: lesson 03, perspective-correct depth (docs/03_perspective_z.md). The
+ * outline of the program. What this lesson teaches is in raster.c: clear the
+ * depth buffer, then draw every face, keeping per pixel the nearest fragment.
+ * Around it (the command line, the scenes, the pictures, the tools) is
+ * common/harness/, reached through lesson.h; what the lesson shows but does
+ * not teach (--depth-interp naive, --compare-naive, --bug) is in extras/. */
 #include "extras/extras.h"
 #include "harness/lesson.h"
 #include "raster.h"
