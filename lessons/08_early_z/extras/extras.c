@@ -1,6 +1,7 @@
 /* extras.c: lesson 08's flags, the shader's picture and the heat map (see
  * extras.h). */
 #include "extras.h"
+#include "modes.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -26,52 +27,10 @@ static const LessonFlag FLAGS[FLAG_COUNT] = {
                        .output = true},
 };
 
-static const char *const MODE_NAMES[] = {[Z_LATE] = "late", [Z_EARLY] = "early",
-                                         [Z_PREPASS] = "prepass"};
-static const char *const SORT_NAMES[] = {[SORT_NONE] = "none",
-                                         [SORT_FRONT_TO_BACK] = "front-to-back",
-                                         [SORT_BACK_TO_FRONT] = "back-to-front"};
-
-const char *z_mode_name(ZMode mode)
-{
-    return MODE_NAMES[mode];
-}
-
-const char *sort_name(SortOrder sort)
-{
-    return SORT_NAMES[sort];
-}
-
-static int find_name(const char *name, const char *const *names, int n)
-{
-    for (int i = 0; i < n; i++)
-        if (strcmp(name, names[i]) == 0)
-            return i;
-    return -1;
-}
-
 LessonState early_z_chosen(const Run *run)
 {
     const char *const *x = run->opt.extra;
-    LessonState s = {.depth = depth_setup(UNORM24, STANDARD, run->opt.near, run->opt.far)};
-    EarlyZ *z = &s.early_z;
-    z->mode = x[FLAG_Z_MODE] ? (ZMode)find_name(x[FLAG_Z_MODE], MODE_NAMES, 3) : Z_EARLY;
-    z->sort = x[FLAG_SORT] ? (SortOrder)find_name(x[FLAG_SORT], SORT_NAMES, 3) : SORT_NONE;
-    z->bug_discard = x[FLAG_BUG] != NULL;
-    return s;
-}
-
-static bool write_colour(const EarlyZ *z, int width, int height, const char *path, Error *err)
-{
-    Image im;
-    if (!image_init(&im, width, height, err))
-        return false;
-    for (int y = 0; y < height; y++)
-        for (int x = 0; x < width; x++)
-            image_set(&im, x, y, z->colour[(size_t)y * (size_t)width + (size_t)x]);
-    bool ok = render_make_parent_dirs(path, err) && image_write_png(&im, path, err);
-    image_free(&im);
-    return ok;
+    return early_z_state(run, x[FLAG_Z_MODE], x[FLAG_SORT], x[FLAG_BUG]);
 }
 
 static bool after_write(Run *run, Error *err)
@@ -86,19 +45,8 @@ static bool after_write(Run *run, Error *err)
 static bool choose(Run *run, Error *err)
 {
     const char *const *x = run->opt.extra;
-    if (run->opt.steps_dir) /* crowd has more faces than --steps takes, and a prepass draws twice */
-        return error_set(err, "--steps does not apply to 08_early_z (the work it counts is per "
-                              "fragment, not per face: see --shade-count-out)");
-    if (x[FLAG_Z_MODE] && find_name(x[FLAG_Z_MODE], MODE_NAMES, 3) < 0)
-        return error_set(err, "--z-mode: '%s' is not one of late, early, prepass", x[FLAG_Z_MODE]);
-    if (x[FLAG_SORT] && find_name(x[FLAG_SORT], SORT_NAMES, 3) < 0)
-        return error_set(err, "--sort: '%s' is not one of none, front-to-back, back-to-front",
-                         x[FLAG_SORT]);
-    if (x[FLAG_BUG] && strcmp(x[FLAG_BUG], "early-z-with-discard") != 0)
-        return error_set(err, "--bug: '%s' is not one of early-z-with-discard", x[FLAG_BUG]);
-    if (x[FLAG_BUG])
-        run_note(run, "  bug early-z-with-discard: cutouts were tested and wrote depth before "
-                      "their shader discarded, so their holes hide what is behind them");
+    if (!early_z_flags_ok(run, x[FLAG_Z_MODE], x[FLAG_SORT], x[FLAG_BUG], err))
+        return false;
     run->after_write = after_write;
     return true;
 }
