@@ -22,44 +22,10 @@ static const LessonFlag FLAGS[FLAG_COUNT] = {
                    .output = true},
 };
 
-static const char *const FORMAT_NAMES[] = {[UNORM16] = "unorm16", [UNORM24] = "unorm24",
-                                           [FLOAT32] = "float32"};
-static const char *const MAPPING_NAMES[] = {[STANDARD] = "standard", [REVERSED] = "reversed"};
-
-/* A finite stand-in for the camera and the clipper when --far is inf: clip
- * space needs a number there; the depth mapping uses infinity itself. */
-#define FAR_AT_INFINITY 1e30
-
-static const DepthRule REVERSED_RULE = {"depth buffer", "z_w", "face", LARGER_IS_NEARER};
-
-const char *format_name(DepthFormat format)
-{
-    return FORMAT_NAMES[format];
-}
-
-const char *mapping_name(DepthMapping mapping)
-{
-    return MAPPING_NAMES[mapping];
-}
-
-/* The index of name in names[0 .. n-1], or -1. */
-static int find_name(const char *name, const char *const *names, int n)
-{
-    for (int i = 0; i < n; i++)
-        if (strcmp(name, names[i]) == 0)
-            return i;
-    return -1;
-}
 
 DepthSetup depth_chosen(const Run *run)
 {
-    const char *f = run->opt.extra[FLAG_FORMAT], *m = run->opt.extra[FLAG_MAPPING];
-    int format = f ? find_name(f, FORMAT_NAMES, 3) : UNORM24;
-    int mapping = m ? find_name(m, MAPPING_NAMES, 2) : STANDARD;
-    /* --far inf, which only the reversed mapping takes, stands as FAR_AT_INFINITY
-     * in clip space; a finite far that large is finite in the standard one. */
-    double far = mapping == REVERSED && run->opt.far >= FAR_AT_INFINITY ? INFINITY : run->opt.far;
-    return depth_setup((DepthFormat)format, (DepthMapping)mapping, run->opt.near, far);
+    return depth_flags_setup(run, run->opt.extra[FLAG_FORMAT], run->opt.extra[FLAG_MAPPING]);
 }
 
 /* On the ladder: the fraction of each band's pixels where the back plate won. */
@@ -89,20 +55,8 @@ static bool after_write(Run *run, Error *err)
 
 static bool choose(Run *run, Error *err)
 {
-    const char *f = run->opt.extra[FLAG_FORMAT], *m = run->opt.extra[FLAG_MAPPING];
-    if (f && find_name(f, FORMAT_NAMES, 3) < 0)
-        return error_set(err, "--depth-format: '%s' is not one of unorm16, unorm24, float32", f);
-    if (m && find_name(m, MAPPING_NAMES, 2) < 0)
-        return error_set(err, "--depth-mapping: '%s' is not one of standard, reversed", m);
-    bool reversed = m && strcmp(m, "reversed") == 0;
-    if (isinf(run->opt.far)) {
-        if (!reversed)
-            return error_set(err, "--far inf needs --depth-mapping reversed (the standard "
-                                  "mapping divides by far - near)");
-        run->opt.far = FAR_AT_INFINITY;
-    }
-    if (reversed)
-        run->rule = &REVERSED_RULE;
+    if (!depth_flags_ok(run, run->opt.extra[FLAG_FORMAT], run->opt.extra[FLAG_MAPPING], err))
+        return false;
     run->after_write = after_write;
     return true;
 }

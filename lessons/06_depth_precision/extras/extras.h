@@ -7,13 +7,12 @@
 #ifndef EXTRAS_H
 #define EXTRAS_H
 
+#include "depth_flags.h"
 #include "depth_format.h"
 #include "harness/lesson.h"
 
 extern const Extras EXTRAS;
 
 DepthSetup depth_chosen(const Run *run); /* the format, mapping, near and far of the run */
-const char *format_name(DepthFormat format);
-const char *mapping_name(DepthMapping mapping);
 
 #endif

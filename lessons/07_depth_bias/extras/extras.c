@@ -24,71 +24,18 @@ static const LessonFlag FLAGS[FLAG_COUNT] = {
                                            "default: no limit)"},
 };
 
-static const char *const FORMAT_NAMES[] = {[UNORM16] = "unorm16", [UNORM24] = "unorm24",
-                                           [FLOAT32] = "float32"};
-static const char *const MAPPING_NAMES[] = {[STANDARD] = "standard", [REVERSED] = "reversed"};
-
-/* A finite stand-in for the camera and the clipper when --far is inf: clip
- * space needs a number there; the depth mapping uses infinity itself. */
-#define FAR_AT_INFINITY 1e30
 
 /* How many decal shares the summary puts on one line. */
 #define SHARES_PER_LINE 6
 
-static const DepthRule REVERSED_RULE = {"depth buffer", "z_w", "face", LARGER_IS_NEARER};
 
-const char *format_name(DepthFormat format)
-{
-    return FORMAT_NAMES[format];
-}
-
-const char *mapping_name(DepthMapping mapping)
-{
-    return MAPPING_NAMES[mapping];
-}
-
-/* The index of name in names[0 .. n-1], or -1. */
-static int find_name(const char *name, const char *const *names, int n)
-{
-    for (int i = 0; i < n; i++)
-        if (strcmp(name, names[i]) == 0)
-            return i;
-    return -1;
-}
-
-/* "FACTOR,UNITS": two finite numbers. */
-static bool parse_offset(const char *s, double *factor, double *units, Error *err)
-{
-    const char *comma = s ? strchr(s, ',') : NULL;
-    if (!comma)
-        return error_set(err, "--polygon-offset: '%.40s' is not two numbers FACTOR,UNITS",
-                         s ? s : "");
-    char *first = strndup(s, (size_t)(comma - s)); /* a number of any length */
-    if (!first)
-        return error_set(err, "--polygon-offset: out of memory");
-    bool ok = parse_double("--polygon-offset (FACTOR)", first, factor, err) &&
-              parse_double("--polygon-offset (UNITS)", comma + 1, units, err);
-    free(first);
-    return ok;
-}
 
 LessonState depth_chosen(const Run *run)
 {
     const char *const *x = run->opt.extra;
-    int format = x[FLAG_FORMAT] ? find_name(x[FLAG_FORMAT], FORMAT_NAMES, 3) : UNORM24;
-    int mapping = x[FLAG_MAPPING] ? find_name(x[FLAG_MAPPING], MAPPING_NAMES, 2) : STANDARD;
-    /* --far inf, which only the reversed mapping takes, stands as FAR_AT_INFINITY
-     * in clip space; a finite far that large is finite in the standard one. */
-    double far = mapping == REVERSED && run->opt.far >= FAR_AT_INFINITY ? INFINITY : run->opt.far;
-    LessonState s = {.depth = depth_setup((DepthFormat)format, (DepthMapping)mapping,
-                                          run->opt.near, far)};
-    Error ignored; /* choose() has checked both flags */
-    if (x[FLAG_OFFSET])
-        parse_offset(x[FLAG_OFFSET], &s.bias.factor, &s.bias.units, &ignored);
-    if (x[FLAG_CLAMP])
-        parse_double("--offset-clamp", x[FLAG_CLAMP], &s.bias.clamp, &ignored);
-    s.bias.mesh = &run->render.mesh;
-    return s;
+    return (LessonState){.depth = depth_flags_setup(run, x[FLAG_FORMAT], x[FLAG_MAPPING]),
+                         .bias = bias_flags_chosen(x[FLAG_OFFSET], x[FLAG_CLAMP],
+                                                   &run->render.mesh)};
 }
 
 /* ---- Each decal's share of its pixels --------------------------------------
@@ -211,26 +158,9 @@ static bool after_write(Run *run, Error *err)
 static bool choose(Run *run, Error *err)
 {
     const char *const *x = run->opt.extra;
-    double factor, units, clamp;
-    if (x[FLAG_FORMAT] && find_name(x[FLAG_FORMAT], FORMAT_NAMES, 3) < 0)
-        return error_set(err, "--depth-format: '%s' is not one of unorm16, unorm24, float32",
-                         x[FLAG_FORMAT]);
-    if (x[FLAG_MAPPING] && find_name(x[FLAG_MAPPING], MAPPING_NAMES, 2) < 0)
-        return error_set(err, "--depth-mapping: '%s' is not one of standard, reversed",
-                         x[FLAG_MAPPING]);
-    if (x[FLAG_OFFSET] && !parse_offset(x[FLAG_OFFSET], &factor, &units, err))
+    if (!depth_flags_ok(run, x[FLAG_FORMAT], x[FLAG_MAPPING], err) ||
+        !bias_flags_ok(x[FLAG_OFFSET], x[FLAG_CLAMP], err))
         return false;
-    if (x[FLAG_CLAMP] && !parse_double("--offset-clamp", x[FLAG_CLAMP], &clamp, err))
-        return false;
-    bool reversed = x[FLAG_MAPPING] && strcmp(x[FLAG_MAPPING], "reversed") == 0;
-    if (isinf(run->opt.far)) {
-        if (!reversed)
-            return error_set(err, "--far inf needs --depth-mapping reversed (the standard "
-                                  "mapping divides by far - near)");
-        run->opt.far = FAR_AT_INFINITY;
-    }
-    if (reversed)
-        run->rule = &REVERSED_RULE;
     run->after_write = after_write;
     return true;
 }

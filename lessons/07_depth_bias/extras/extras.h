@@ -4,14 +4,13 @@
 #ifndef EXTRAS_H
 #define EXTRAS_H
 
-#include "depth_format.h"
+#include "bias_flags.h"
+#include "depth_flags.h"
 #include "harness/lesson.h"
 #include "state.h"
 
 extern const Extras EXTRAS;
 
 LessonState depth_chosen(const Run *run); /* format, mapping, near, far and bias of the run */
-const char *format_name(DepthFormat format);
-const char *mapping_name(DepthMapping mapping);
 
 #endif

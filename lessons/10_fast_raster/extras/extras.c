@@ -34,14 +34,6 @@ static const LessonFlag FLAGS[FLAG_COUNT] = {
 
 static const char *const SIMD_NAMES[] = {[SIMD_PIXELS] = "pixels", [SIMD_NONE] = "none",
                                          [SIMD_SSE2] = "sse2", [SIMD_AVX2] = "avx2"};
-static const char *const FORMAT_NAMES[] = {[UNORM16] = "unorm16", [UNORM24] = "unorm24",
-                                           [FLOAT32] = "float32"};
-static const char *const MAPPING_NAMES[] = {[STANDARD] = "standard", [REVERSED] = "reversed"};
-
-#define FAR_AT_INFINITY 1e30 /* lesson 07's stand-in for --far inf in clip space */
-
-static const DepthRule REVERSED_RULE = {"depth buffer", "z_w", "face", LARGER_IS_NEARER};
-
 const char *simd_name(Simd simd)
 {
     return SIMD_NAMES[simd];
@@ -71,21 +63,6 @@ static int find_name(const char *name, const char *const *names, int n)
     return -1;
 }
 
-static bool parse_offset(const char *s, double *factor, double *units, Error *err)
-{
-    const char *comma = s ? strchr(s, ',') : NULL;
-    if (!comma)
-        return error_set(err, "--polygon-offset: '%.40s' is not two numbers FACTOR,UNITS",
-                         s ? s : "");
-    char *first = strndup(s, (size_t)(comma - s)); /* a number of any length */
-    if (!first)
-        return error_set(err, "--polygon-offset: out of memory");
-    bool ok = parse_double("--polygon-offset (FACTOR)", first, factor, err) &&
-              parse_double("--polygon-offset (UNITS)", comma + 1, units, err);
-    free(first);
-    return ok;
-}
-
 static int cores(void)
 {
     long n = sysconf(_SC_NPROCESSORS_ONLN);
@@ -95,31 +72,20 @@ static int cores(void)
 LessonState fast_chosen(const Run *run)
 {
     const char *const *x = run->opt.extra;
-    int format = x[FLAG_FORMAT] ? find_name(x[FLAG_FORMAT], FORMAT_NAMES, 3) : UNORM24;
-    int mapping = x[FLAG_MAPPING] ? find_name(x[FLAG_MAPPING], MAPPING_NAMES, 2) : STANDARD;
-    /* --far inf, which only the reversed mapping takes, stands as FAR_AT_INFINITY
-     * in clip space; a finite far that large is finite in the standard one. */
-    double far = mapping == REVERSED && run->opt.far >= FAR_AT_INFINITY ? INFINITY : run->opt.far;
-    DepthSetup s = depth_setup((DepthFormat)format, (DepthMapping)mapping, run->opt.near, far);
     Error ignored; /* choose() has checked every flag */
     long threads = cores();
     if (x[FLAG_THREADS])
         parse_int("--threads", x[FLAG_THREADS], 1, MAX_THREADS, &threads, &ignored);
     Simd simd = x[FLAG_SIMD] ? (Simd)find_name(x[FLAG_SIMD], SIMD_NAMES, 4) : simd_best();
-    LessonState state = fast_raster(s, simd, (int)threads,
-                                    run->opt.overdraw_out || run->opt.trace_set);
-    if (x[FLAG_OFFSET])
-        parse_offset(x[FLAG_OFFSET], &state.bias.factor, &state.bias.units, &ignored);
-    if (x[FLAG_CLAMP])
-        parse_double("--offset-clamp", x[FLAG_CLAMP], &state.bias.clamp, &ignored);
-    state.bias.mesh = &run->render.mesh;
+    LessonState state = fast_raster(depth_flags_setup(run, x[FLAG_FORMAT], x[FLAG_MAPPING]), simd,
+                                    (int)threads, run->opt.overdraw_out || run->opt.trace_set);
+    state.bias = bias_flags_chosen(x[FLAG_OFFSET], x[FLAG_CLAMP], &run->render.mesh);
     return state;
 }
 
 static bool choose(Run *run, Error *err)
 {
     const char *const *x = run->opt.extra;
-    double factor, units, clamp;
     long threads;
     if (run->opt.steps_dir)
         return error_set(err, "--steps does not apply to 10_fast_raster (faces are drawn "
@@ -132,26 +98,8 @@ static bool choose(Run *run, Error *err)
                          SIMD_NAMES[simd_best()]);
     if (x[FLAG_THREADS] && !parse_int("--threads", x[FLAG_THREADS], 1, MAX_THREADS, &threads, err))
         return false;
-    if (x[FLAG_FORMAT] && find_name(x[FLAG_FORMAT], FORMAT_NAMES, 3) < 0)
-        return error_set(err, "--depth-format: '%s' is not one of unorm16, unorm24, float32",
-                         x[FLAG_FORMAT]);
-    if (x[FLAG_MAPPING] && find_name(x[FLAG_MAPPING], MAPPING_NAMES, 2) < 0)
-        return error_set(err, "--depth-mapping: '%s' is not one of standard, reversed",
-                         x[FLAG_MAPPING]);
-    if (x[FLAG_OFFSET] && !parse_offset(x[FLAG_OFFSET], &factor, &units, err))
-        return false;
-    if (x[FLAG_CLAMP] && !parse_double("--offset-clamp", x[FLAG_CLAMP], &clamp, err))
-        return false;
-    bool reversed = x[FLAG_MAPPING] && strcmp(x[FLAG_MAPPING], "reversed") == 0;
-    if (isinf(run->opt.far)) {
-        if (!reversed)
-            return error_set(err, "--far inf needs --depth-mapping reversed (the standard "
-                                  "mapping divides by far - near)");
-        run->opt.far = FAR_AT_INFINITY;
-    }
-    if (reversed)
-        run->rule = &REVERSED_RULE;
-    return true;
+    return depth_flags_ok(run, x[FLAG_FORMAT], x[FLAG_MAPPING], err) &&
+           bias_flags_ok(x[FLAG_OFFSET], x[FLAG_CLAMP], err);
 }
 
 const Extras EXTRAS = {.flags = FLAGS, .n_flags = FLAG_COUNT, .choose = choose};

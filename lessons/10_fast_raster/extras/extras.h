@@ -4,6 +4,8 @@
 #ifndef EXTRAS_H
 #define EXTRAS_H
 
+#include "bias_flags.h"
+#include "depth_flags.h"
 #include "fast_raster.h"
 #include "hierarchical_z.h"
 #include "harness/lesson.h"
