@@ -1,8 +1,12 @@
 /* coverage.c: lesson 02's fill rule, step by step (coverage.h,
- * docs/02_zbuffer.md): which pixels a triangle covers, decided exactly. */
+ * docs/02_zbuffer.md): which pixels a triangle covers, decided exactly;
+ * draw_triangle walks them, draw_face cuts a face into such triangles. */
 #include "coverage.h"
+#include "raster.h"
 
 #include <math.h>
+
+#include "guard_band.h"
 
 /* Rounds a screen position to the nearest 1/256 of a pixel. From here on every
  * decision is in integers, exact: triangles sharing an edge see the same edge. */
@@ -89,27 +93,14 @@ static int last_pixel(int64_t hi)
     return (int)(n >= 0 ? n / SUBPIXEL_ONE : -((-n + SUBPIXEL_ONE - 1) / SUBPIXEL_ONE));
 }
 
-static int64_t min3(int64_t a, int64_t b, int64_t c)
-{
-    int64_t m = a < b ? a : b;
-    return m < c ? m : c;
-}
-
-static int64_t max3(int64_t a, int64_t b, int64_t c)
-{
-    int64_t m = a > b ? a : b;
-    return m > c ? m : c;
-}
-
-static int clamp(int v, int lo, int hi)
-{
-    return v < lo ? lo : v > hi ? hi : v;
-}
+static int64_t min2(int64_t a, int64_t b) { return a < b ? a : b; }
+static int64_t max2(int64_t a, int64_t b) { return a > b ? a : b; }
+static int clamp(int v, int lo, int hi) { return v < lo ? lo : v > hi ? hi : v; }
 
 PixelBox bounding_box(FixedPoint a, FixedPoint b, FixedPoint c, int width, int height)
 {
-    PixelBox box = {first_pixel(min3(a.x, b.x, c.x)), first_pixel(min3(a.y, b.y, c.y)),
-                    last_pixel(max3(a.x, b.x, c.x)), last_pixel(max3(a.y, b.y, c.y))};
+    PixelBox box = {first_pixel(min2(min2(a.x, b.x), c.x)), first_pixel(min2(min2(a.y, b.y), c.y)),
+                    last_pixel(max2(max2(a.x, b.x), c.x)), last_pixel(max2(max2(a.y, b.y), c.y))};
     /* Clamping keeps an empty box empty: x0 > width - 1 stays above x1 <= width - 1. */
     box.x0 = clamp(box.x0, 0, width);
     box.y0 = clamp(box.y0, 0, height);
@@ -133,4 +124,70 @@ EdgeStepper edge_stepper(FixedPoint a, FixedPoint b, FixedPoint first_centre)
     EdgeStepper s = {edge_function(a, b, first_centre), -(b.y - a.y) * SUBPIXEL_ONE,
                      (b.x - a.x) * SUBPIXEL_ONE, is_top_left(a, b)};
     return s;
+}
+
+/* The triangle's covered pixels, row by row, each depth-tested at the depth
+ * the lesson's interpolate_depth blends from its corner_depth (raster.h). */
+void draw_triangle(Target *t, ScreenVertex a, ScreenVertex b, ScreenVertex c, int face,
+                   double far)
+{
+    FixedPoint p0 = snap_to_fixed(a), p1 = snap_to_fixed(b), p2 = snap_to_fixed(c);
+    int64_t area = edge_function(p0, p1, p2); /* twice the signed area */
+    if (area == 0)
+        return; /* no area, no pixel centre strictly inside: nothing to draw */
+    if (area < 0) {
+        /* Counter-clockwise on the screen: both windings are drawn, so walk
+         * it the other way round (swap corners 1 and 2). */
+        FixedPoint tp = p1; p1 = p2; p2 = tp;
+        ScreenVertex tv = b; b = c; c = tv;
+        area = -area;
+    }
+    PixelBox box = bounding_box(p0, p1, p2, t->width, t->height);
+    FixedPoint first = pixel_centre(box.x0, box.y0);
+    EdgeStepper s0 = edge_stepper(p1, p2, first); /* edge opposite corner 0 */
+    EdgeStepper s1 = edge_stepper(p2, p0, first); /* edge opposite corner 1 */
+    EdgeStepper s2 = edge_stepper(p0, p1, first); /* edge opposite corner 2 */
+    double inv_area = 1.0 / (double)area; /* for barycentric_weights: one division per triangle */
+    double v0 = corner_depth(a), v1 = corner_depth(b), v2 = corner_depth(c); /* not per pixel */
+
+    for (int y = box.y0; y <= box.y1; y++) {
+        int64_t e0 = s0.row_start, e1 = s1.row_start, e2 = s2.row_start;
+        bool entered = false;
+        for (int x = box.x0; x <= box.x1; x++, e0 += s0.step_x, e1 += s1.step_x, e2 += s2.step_x) {
+            bool inside = edge_covers(e0, s0.top_left) && edge_covers(e1, s1.top_left) &&
+                          edge_covers(e2, s2.top_left);
+            if (!inside) {
+                if (entered)
+                    break; /* a triangle is convex: once out of it, the row is done */
+                continue;
+            }
+            entered = true;
+            Barycentric w = barycentric_weights(e0, e1, e2, inv_area);
+            double d = interpolate_depth(w, v0, v1, v2);
+            if (d > far)
+                continue; /* beyond the far plane: discarded before any test */
+            depth_test(t, (size_t)y * (size_t)t->width + (size_t)x, face, (float)d);
+        }
+        s0.row_start += s0.step_y;
+        s1.row_start += s1.step_y;
+        s2.row_start += s2.step_y;
+    }
+}
+
+/* A face is drawn as its triangles. One reaching far off the screen is first
+ * cut down to the guard band (common/guard_band.h), where fixed point holds
+ * it; what is left is a convex polygon, drawn as a fan. */
+void draw_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx)
+{
+    (void)s;
+    if (!screen_face_is_finite(f))
+        return; /* a corner that is not a number: no picture is right, so none is drawn */
+    for (int k = 0; k < f->n - 2; k++) {
+        const Tri *tri = &f->tris[k];
+        ScreenVertex corners[3] = {f->v[tri->c[0]], f->v[tri->c[1]], f->v[tri->c[2]]};
+        ScreenVertex band[GUARD_BAND_MAX_OUT(3)];
+        int n = guard_band_clip(corners, 3, t->width, t->height, DEPTH_LINEARITY, band);
+        for (int j = 1; j + 1 < n; j++)
+            draw_triangle(t, band[0], band[j], band[j + 1], f->face, ctx->far);
+    }
 }

@@ -7,7 +7,7 @@
  * This lesson interpolates d itself linearly on the screen: the naive way,
  * wrong under perspective. Lesson 03 takes 1/d to be linear instead, and
  * changes only that: interpolate_depth blends the corners' 1/d and inverts
- * the result, draw_triangle works out the corners' 1/d once per triangle, and
+ * the result, corner_depth gives it each corner's 1/d, and
  * the guard band cuts a triangle by the same rule (DEPTH_LINEARITY). */
 #ifndef RASTER_H
 #define RASTER_H
@@ -16,10 +16,16 @@
 #include <stddef.h>
 
 #include "coverage.h"
+#include "guard_band.h"
 #include "rasterizer.h"
 #include "target.h"
 
+/* What this lesson takes to be linear on the screen: d itself (the naive way).
+ * A triangle cut at the guard band gets its new corners' d by the same rule. */
+#define DEPTH_LINEARITY LINEAR_D
+
 void clear_depth(Target *t, LessonState *s); /* s: none here (rasterizer.h) */
+double corner_depth(ScreenVertex v); /* what interpolate_depth blends at a corner: d */
 double interpolate_depth(Barycentric w, double d0, double d1, double d2);
 bool depth_test(Target *t, size_t i, int face, float d);
 /* Corners inside the guard band (guard_band.h): draw_face sees to that. */
