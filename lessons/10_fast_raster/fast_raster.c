@@ -105,9 +105,11 @@ static void set_up_polygon(const Primitive *q, const Corner *c, int n, int turn,
     Bins *b = bins_of(t, q->state);
     bool room = b && b->npoly < FLUSH_POLYGONS && bins_room(b, &p, n);
     if (b && !room) /* draw what waits, then there is room */
-        fast_finish(t, q->state), room = bins_room(b, &p, n);
+        fast_finish(t, q->state, NULL), room = bins_room(b, &p, n);
     if (room)
         bin_polygon(b, &p, c, n);
+    else
+        q->state->fast.out_of_memory = true;
 }
 
 /* A convex polygon as lesson 04 takes it; false: it would draw its triangles. */
@@ -251,11 +253,11 @@ static void *draw_tiles(void *arg)
     return NULL;
 }
 
-void fast_finish(Target *t, LessonState *s)
+bool fast_finish(Target *t, LessonState *s, Error *err)
 {
     FastRaster *fr = &s->fast;
     if (fr->set_up_only)
-        return;
+        return true;
     set_up_held_faces(t, s);
     Bins *b = fr->bins;
     int ntiles = b ? b->tiles_x * b->tiles_y : 0, busy = 0;
@@ -282,6 +284,10 @@ void fast_finish(Target *t, LessonState *s)
     }
     bins_empty(b);
     free(id), free(th), free(tiles);
+    fr->out_of_memory = fr->out_of_memory || (b && !id);
+    if (fr->out_of_memory && err)
+        error_set(err, "out of memory for the bins and tiles: the picture is not whole");
+    return !fr->out_of_memory;
 }
 
 const Rasterizer FAST_ZBUFFER = {

@@ -28,12 +28,15 @@ typedef struct {
     uint64_t keep;    /* the face's pixels a cutout keeps, in any block */
     Bins *bins; Held *held;
     bool set_up_only; /* a thread's copy, setting faces up: it never draws */
+    bool out_of_memory; /* an allocation failed: a face or a tile went undrawn */
 } FastRaster;
 
 /* The lesson's state (state.h): depth, the engine, no tile buffer yet. */
 LessonState fast_raster(DepthSetup depth, Simd simd, int threads, bool count);
 Simd simd_best(void);
-void fast_finish(Target *t, LessonState *s); /* draws every tile's bin */
+/* Draws every tile's bin. False, with err (when not NULL) set, when memory
+ * ran out for a face or a tile since the clear: the picture is not whole. */
+bool fast_finish(Target *t, LessonState *s, Error *err);
 void fast_raster_free(FastRaster *fr);
 
 /* hiz_clear; each face set up as lesson 07 sets it up, its polygons

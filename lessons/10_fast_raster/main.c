@@ -34,11 +34,10 @@ int main(int argc, char **argv)
     state.hiz = &h;
     run.rasterizer.state = &state;                     /* the format, the engine, the tiles */
     run.rz->clear(&run.target, run.rz->state);         /* clear: the far plane, every tile */
-    if (run_draw(&run)) {                              /* draw: each face set up, binned */
-        fast_finish(&run.target, &state);              /* ... then drawn, tile by tile */
-        if (run_write(&run))                           /* write: the pictures asked for */
-            run_report(&run);                          /* report: the summary, the engine */
-    }
+    if (run_draw(&run) &&                              /* draw: each face set up, binned */
+        fast_finish(&run.target, &state, &run.err) &&  /* ... then drawn, tile by tile */
+        run_write(&run))                               /* write: the pictures asked for */
+        run_report(&run);                              /* report: the summary, the engine */
     status = run_end(&run);
     hiz_free(&h);
     fast_raster_free(&state.fast);

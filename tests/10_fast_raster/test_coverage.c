@@ -11,7 +11,7 @@ static LessonState engine; /* no tile buffer */
 
 #define SUITE_RASTERIZER FAST_ZBUFFER
 #define SUITE_STATE (&engine)
-#define SUITE_FINISH(t) fast_finish(t, &engine)
+#define SUITE_FINISH(t) fast_finish(t, &engine, NULL)
 #include "../shared/coverage_suite.inc"
 
 int main(void)

@@ -91,7 +91,7 @@ static bool measure_workload(const Rasterizer *lesson_rz, const Workload *w, int
         double start = wall_clock ? now_wall_seconds() : now_seconds();
         workload_draw(w, &t, rz);
 #ifdef BENCH_FINISH
-        BENCH_FINISH(&t, rz->state); /* a rasterizer that holds faces back draws them now */
+        BENCH_FINISH(&t, rz->state, NULL); /* a rasterizer that holds faces back draws them now */
 #endif
         double elapsed = (wall_clock ? now_wall_seconds() : now_seconds()) - start;
         uint64_t sum = depth_checksum(&t);

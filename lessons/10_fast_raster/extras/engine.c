@@ -101,7 +101,7 @@ Bins *bins_of(Target *t, LessonState *s)
     FastRaster *fr = &s->fast;
     Bins *b = fr->bins;
     if (b && b->target != t && b->npoly > 0)
-        fast_finish((Target *)b->target, s);
+        fast_finish((Target *)b->target, s, NULL);
     int tiles_x = (t->width + TILE_SIZE - 1) / TILE_SIZE;
     int tiles_y = (t->height + TILE_SIZE - 1) / TILE_SIZE;
     if (!b || b->tiles_x != tiles_x || b->tiles_y != tiles_y) {
@@ -460,5 +460,6 @@ void draw_pixels(TileWork *w, const Poly *p, const EdgeFn *e)
 void clear_fast(Target *t, LessonState *s)
 {
     bins_empty(s->fast.bins);
+    s->fast.out_of_memory = false;
     hiz_clear(t, s);
 }

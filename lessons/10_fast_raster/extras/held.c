@@ -27,7 +27,7 @@ struct Held {
     Bins *run[RUNS_MAX]; /* each run's bins, kept from one finish to the next */
 };
 
-typedef struct { Target *t; LessonState *s; Held *h; size_t lo, hi; int k; } Run;
+typedef struct { Target *t; LessonState *s; Held *h; size_t lo, hi; int k; bool lost; } Run;
 
 /* False: it cannot be held (set up now). */
 bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx)
@@ -37,7 +37,7 @@ bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext
         return false;
     Held *h = fr->held;
     if (h->nface >= HOLD_MAX)
-        fast_finish(t, s);
+        fast_finish(t, s, NULL);
     void *face = h->face, *v = h->v, *clip = h->clip, *tri = h->tri;
     size_t n = (size_t)f->n;
     bool ok = grow_array(&face, &h->cap_face, h->nface + 1, sizeof *h->face) &&
@@ -46,7 +46,7 @@ bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext
               grow_array(&tri, &h->cap_tri, h->ntri + n - 2, sizeof *h->tri);
     h->face = face, h->v = v, h->clip = clip, h->tri = tri;
     if (!ok) {
-        fast_finish(t, s); /* what was held, first: then this face is set up now */
+        fast_finish(t, s, NULL); /* what was held, first: then this face is set up now */
         return false;
     }
     memcpy(h->v + h->nv, f->v, n * sizeof *f->v);
@@ -74,6 +74,7 @@ static void *set_up_run(void *arg)
         set_up_face(r->t, &sub, &f, &h->ctx);
     }
     h->run[r->k] = sub.fast.bins;
+    r->lost = sub.fast.out_of_memory; /* a face it could not bin */
     return NULL;
 }
 
@@ -81,15 +82,20 @@ void set_up_held_faces(Target *t, LessonState *s)
 {
     FastRaster *fr = &s->fast;
     Held *h = fr->held;
-    if (!h || h->nface == 0 || !bins_of(t, s))
+    if (!h || h->nface == 0)
         return;
+    if (!bins_of(t, s)) {
+        fr->out_of_memory = true; /* the held faces are lost */
+        h->nface = h->nv = h->ntri = 0;
+        return;
+    }
     int runs = fr->threads < RUNS_MAX ? fr->threads : RUNS_MAX;
     Run r[RUNS_MAX];
     pthread_t id[RUNS_MAX];
     bool started[RUNS_MAX] = {false};
     for (int k = 0; k < runs; k++) {
         r[k] = (Run){t, s, h, h->nface * (size_t)k / (size_t)runs,
-                     h->nface * (size_t)(k + 1) / (size_t)runs, k};
+                     h->nface * (size_t)(k + 1) / (size_t)runs, k, false};
         started[k] = k > 0 && pthread_create(&id[k], NULL, set_up_run, &r[k]) == 0;
     }
     set_up_run(&r[0]);
@@ -101,6 +107,7 @@ void set_up_held_faces(Target *t, LessonState *s)
             pthread_join(id[k], NULL);
         if (h->run[k])
             last->next = h->run[k], last = h->run[k];
+        fr->out_of_memory = fr->out_of_memory || r[k].lost;
     }
     h->nface = h->nv = h->ntri = 0;
 }
