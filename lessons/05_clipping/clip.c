@@ -117,17 +117,3 @@ void draw_clipped_face(const Primitive *p, const ScreenFace *f, const DrawContex
             draw_clipped_polygon(p, tri, 3, ctx);
         }
 }
-
-/* The lesson's buffer (scanline.h: its clear and its stored value as d), each
- * face clipped first. */
-static void draw_face_clipped(Target *t, LessonState *s, const ScreenFace *f,
-                              const DrawContext *ctx)
-{
-    Primitive p = {.target = t, .state = s, .face = f->face};
-    draw_clipped_face(&p, f, ctx);
-}
-
-const Rasterizer CLIPPING_ZBUFFER = {
-    .clear = clear_depth, .draw_face = draw_face_clipped, .stored_to_depth = stored_to_depth,
-    .clips = true,
-};

@@ -29,7 +29,4 @@ int clip_polygon(const Vec4 *in, int n, Vec4 *out);              /* near, then f
 ScreenVertex clip_to_screen(Vec4 c, int width, int height);      /* divide, viewport */
 void draw_clipped_face(const Primitive *p, const ScreenFace *f, const DrawContext *ctx);
 
-/* The lesson's buffer (scanline.h), handed every face the near plane leaves something of. */
-extern const Rasterizer CLIPPING_ZBUFFER;
-
 #endif

@@ -8,7 +8,7 @@
 #include <math.h>
 #include <stdio.h>
 
-#include "clip.h"
+#include "clipping.h"
 #include "extras/extras.h"
 #include "harness/lesson.h"
 #include "scanline.h"

@@ -1,7 +1,7 @@
 /* test_bench_workloads.c: `make bench` times lesson 05's real rasterizer: every
  * workload of tests/bench/ leaves the depth buffer render_faces leaves. See
  * tests/shared/bench_workloads_suite.inc. */
-#include "clip.h"
+#include "clipping.h"
 
 #define SUITE_RASTERIZER CLIPPING_ZBUFFER
 #include "../shared/bench_workloads_suite.inc"

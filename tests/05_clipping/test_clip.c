@@ -20,7 +20,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "clip.h"
+#include "clipping.h"
 #include "harness/render.h"
 #include "test_support.h"
 

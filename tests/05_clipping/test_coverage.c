@@ -8,7 +8,7 @@
  * once: faces the near plane cuts keep their shared edges, because a new
  * corner on a shared edge is worked out from the same inside corner by both
  * faces, and an old corner is divided as the pipeline divides it. */
-#include "clip.h"
+#include "clipping.h"
 
 #define SUITE_RASTERIZER CLIPPING_ZBUFFER
 #include "../shared/coverage_suite.inc"

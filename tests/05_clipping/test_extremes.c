@@ -2,7 +2,7 @@
  * faces around the screen many times over, degenerate faces and corners that
  * are not numbers, as lessons 02 and 03's. The tests are shared with the other
  * 3-D lessons: see tests/shared/extremes_suite.inc. */
-#include "clip.h"
+#include "clipping.h"
 
 #define EXTREMES_RASTERIZER CLIPPING_ZBUFFER
 #include "../shared/extremes_suite.inc"

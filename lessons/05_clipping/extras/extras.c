@@ -4,7 +4,7 @@
 #include <string.h>
 
 #include "bugs.h"
-#include "clip.h"
+#include "clipping.h"
 #include "harness/compare_naive.h"
 #include "scanline.h"
 
