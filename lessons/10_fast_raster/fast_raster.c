@@ -16,7 +16,6 @@
 #define POLYGON_MAX_CORNERS 256 /* more: drawn as triangles, as lesson 04 does */
 #define LAST (BLOCK_SIZE - 1)           /* a block's last pixel, from its first */
 #define SHORT_EDGE (1 << 27)     /* |a| + |b| below it: a block's values fit in 32 bits */
-#define FAR_SLACK 1e-7           /* of 1/d: more than the scanline's rounding */
 #define FLUSH_POLYGONS (1 << 13) /* drawn once this many wait: the bins stay small */
 
 static int imin(int a, int b) { return a < b ? a : b; }
@@ -59,13 +58,11 @@ static int64_t edge_max(const EdgeFn *e, int x0, int y0, int w, int h)
 /* p and its edges into the bin of every tile of its box no edge leaves out. */
 static void bin_polygon(Bins *b, Poly *p, const Corner *c, int n)
 {
-    p->first = (uint32_t)(p->walked ? b->ncorner : b->nedge);
+    p->first = (uint32_t)b->nedge;
     for (int k = 0; k < n; k++) {
         int next = k + 1 < n ? k + 1 : 0; /* clockwise: backwards when p turns the other way */
         Corner from = c[p->turn < 0 ? n - 1 - k : k], to = c[p->turn < 0 ? n - 1 - next : next];
-        if (p->walked)
-            b->corner[b->ncorner + p->n++] = c[k];
-        else if (from.x != to.x || from.y != to.y) /* a corner twice is no edge */
+        if (from.x != to.x || from.y != to.y) /* a corner twice is no edge */
             b->edge[b->nedge + p->n++] = edge_function(from, to);
     }
     const EdgeFn *e = b->edge + b->nedge;
@@ -75,32 +72,32 @@ static void bin_polygon(Bins *b, Poly *p, const Corner *c, int n)
             int w = imin(p->x1, (tx + 1) * TILE_SIZE) - 1 - x0;
             int h = imin(p->y1, (ty + 1) * TILE_SIZE) - 1 - y0;
             bool outside = false;
-            for (uint32_t k = 0; !p->walked && k < p->n && !outside; k++)
+            for (uint32_t k = 0; k < p->n && !outside; k++)
                 outside = edge_max(&e[k], x0, y0, w, h) < 0;
             Bin *bin = &b->bin[ty * b->tiles_x + tx];
             if (!outside) /* bins_room made room */
                 bin->at[bin->n++] = (uint32_t)b->npoly;
         }
-    *(p->walked ? &b->ncorner : &b->nedge) += p->n;
+    b->nedge += p->n;
     b->poly[b->npoly++] = *p;
 }
 
-/* Its box on the screen, whether the far plane may discard fragments; binned. */
-static void set_up_polygon(const Primitive *q, const Corner *c, int n, int turn, double inv_far)
+/* Its box on the screen; binned. */
+static void set_up_polygon(const Primitive *q, const Corner *c, int n, int turn)
 {
     Target *t = q->target;
-    Corner lo, hi; /* the least and largest x, y and 1/d of the corners */
-    corners_range(c, n, &lo, &hi);
-    Poly p = {.turn = turn, .inv_far = inv_far, /* the pixel centres of the box, on the screen */
+    Corner lo = c[0], hi = c[0]; /* the least and largest x and y of the corners */
+    for (int k = 1; k < n; k++) {
+        lo.x = c[k].x < lo.x ? c[k].x : lo.x, hi.x = c[k].x > hi.x ? c[k].x : hi.x;
+        lo.y = c[k].y < lo.y ? c[k].y : lo.y, hi.y = c[k].y > hi.y ? c[k].y : hi.y;
+    }
+    Poly p = {.turn = turn, /* the pixel centres of the box, on the screen */
               .x0 = imin(t->width, imax(0, (int)first_centre_at_or_after(lo.x))),
               .y0 = imin(t->height, imax(0, (int)first_centre_at_or_after(lo.y))),
               .x1 = imax(0, imin(t->width, (int)floor_div(hi.x - HALF_PIXEL, S) + 1)),
               .y1 = imax(0, imin(t->height, (int)floor_div(hi.y - HALF_PIXEL, S) + 1))};
     if (p.x0 >= p.x1 || p.y0 >= p.y1)
         return; /* no pixel centre on the screen */
-    /* Every 1/d inside lies between the corners' (up to rounding, far below
-     * FAR_SLACK): unless one is near the far plane, nothing is discarded. */
-    p.walked = turn == 0 || !(lo.inv_d - inv_far > FAR_SLACK * hi.inv_d);
     p.depth = block_depth(q, &p.plain);
     Bins *b = bins_of(t, q->state);
     bool room = b && b->npoly < FLUSH_POLYGONS && bins_room(b, &p, n);
@@ -112,9 +109,13 @@ static void set_up_polygon(const Primitive *q, const Corner *c, int n, int turn,
         q->state->fast.out_of_memory = true;
 }
 
-/* A convex polygon as lesson 04 takes it; false: it would draw its triangles. */
+/* A convex polygon as lesson 04 takes it; false: it would draw its triangles.
+ * It replaces lesson 04's walk, as lesson 09's tiles.c does: no 1/d is
+ * stepped, and nothing is discarded beyond the far plane, which lesson 05's
+ * clipper keeps every corner inside. */
 bool draw_polygon(const Primitive *p, const ScreenVertex *v, int n, double far)
 {
+    (void)far;
     if (n < 3)
         return true;
     if (n > POLYGON_MAX_CORNERS)
@@ -123,7 +124,7 @@ bool draw_polygon(const Primitive *p, const ScreenVertex *v, int n, double far)
     for (int i = 0; i < n; i++) {
         if (!corner_in_range(&v[i]))
             return false;
-        c[i] = (Corner){snap(v[i].x), snap(v[i].y), 1.0 / v[i].d};
+        c[i] = (Corner){snap(v[i].x), snap(v[i].y)};
     }
     int turn; /* a triangle is convex: its turn is that of its snapped corners */
     if (n == 3) {
@@ -131,8 +132,8 @@ bool draw_polygon(const Primitive *p, const ScreenVertex *v, int n, double far)
         turn = (cross > 0) - (cross < 0);
     } else if (!convex_on_screen(v, n, SUBPIXEL_ONE, &turn))
         return false;
-    corners_on_plane(c, v, n); /* lesson 04's 1/d of the snapped corners */
-    set_up_polygon(p, c, n, turn, 1.0 / far);
+    if (turn != 0) /* else no area: no pixel */
+        set_up_polygon(p, c, n, turn);
     return true;
 }
 
@@ -232,10 +233,7 @@ static void draw_tile(TileWork *w, const Bins *b, int tile)
     for (; b; b = b->next)
         for (size_t k = 0; k < b->bin[tile].n; k++) {
             const Poly *p = &b->poly[b->bin[tile].at[k]];
-            if (!p->walked)
-                (w->fr->simd == SIMD_PIXELS ? draw_pixels : draw_in_tile)(w, p, &b->edge[p->first]);
-            else /* lesson 04's walk, then every block's farthest anew */
-                walk_in_tile(w, p, &b->corner[p->first]), tile_read_again(w);
+            (w->fr->simd == SIMD_PIXELS ? draw_pixels : draw_in_tile)(w, p, &b->edge[p->first]);
         }
 }
 

@@ -3,9 +3,8 @@
  * (--depth-out, the same float bits) on every built-in scene, with every
  * --simd this machine runs (and pixels, without blocks) and 1, 2 and 3
  * threads; lesson 07's in the other depth formats and mappings, with a
- * polygon offset, and with a far plane that cuts the scene (lesson 04's
- * walk); the fragments it counts when asked to count (lesson 08's: no block
- * skipped); bad input. */
+ * polygon offset, and with a far plane that cuts the scene; the fragments
+ * it counts when asked to count (lesson 08's: no block skipped); bad input. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -133,7 +132,7 @@ static void avx2_draws_lesson_09s_pictures(void **state)
 
 /* Lesson 07 has no cutouts (crowd's fences): every other scene, in the
  * depth buffers lesson 08 does not offer, and where --far 12 cuts walls and
- * inside (polygons walked as lesson 04 walks them, for the far discard); at
+ * inside (lesson 05 clips them: no fragment lies beyond the far plane); at
  * 400 x 300, so that the test keeps within make grade's time per test. */
 static void other_depth_buffers_draw_lesson_07s_pictures(void **state)
 {
@@ -163,6 +162,21 @@ static void other_depth_buffers_draw_lesson_07s_pictures(void **state)
             pictures_free(&want);
             pictures_free(&got);
         }
+}
+
+/* A far plane through decals' wall, at d = 8: lesson 04's walk (lessons
+ * 04-08) discards a few fragments whose stepped 1/d falls below the far
+ * plane's; lessons 09 and 10 step no 1/d and keep them, as a GPU does
+ * after clipping. */
+static void a_far_plane_through_a_face_draws_lesson_09s_picture(void **state)
+{
+    (void)state;
+    const char *args[] = {"--far", "8", "--width", "400", "--height", "300", NULL};
+    Pictures want = draw("09_hierarchical_z", "decals", args);
+    Pictures got = draw(PROGRAM, "decals", args);
+    expect_same_pictures(&want, &got, "scene decals with --far 8");
+    pictures_free(&want);
+    pictures_free(&got);
 }
 
 /* Whether files a and b hold the same bytes. */
@@ -292,6 +306,7 @@ int main(void)
         cmocka_unit_test(sse2_draws_lesson_09s_pictures),
         cmocka_unit_test(avx2_draws_lesson_09s_pictures),
         cmocka_unit_test(other_depth_buffers_draw_lesson_07s_pictures),
+        cmocka_unit_test(a_far_plane_through_a_face_draws_lesson_09s_picture),
         cmocka_unit_test(fragments_are_counted_as_lesson_08_counts_them),
         cmocka_unit_test(most_blocks_behind_citys_wall_are_skipped),
         cmocka_unit_test(summary_says_overdraw_was_not_counted),

@@ -1,7 +1,6 @@
 /* engine.c: lesson 10's plumbing, shown but not taught (engine.h): the
- * bins' memory; each face set up as lesson 07 sets it up; lesson 04's
- * corners and its walk down a polygon that reaches the far plane; one
- * fragment at a time in plain C, counted for --overdraw-out and --trace. */
+ * bins' memory; each face set up as lesson 07 sets it up; one fragment at
+ * a time in plain C, counted for --overdraw-out and --trace. */
 #include "engine.h"
 #include "held.h"
 
@@ -46,18 +45,16 @@ bool grow_array(void **items, size_t *cap, size_t need, size_t size)
 
 bool bins_room(Bins *b, const Poly *p, int n)
 {
-    bool room = b->npoly < b->cap_poly && b->nedge + (size_t)n <= b->cap_edge &&
-                b->ncorner + (size_t)n <= b->cap_corner;
+    bool room = b->npoly < b->cap_poly && b->nedge + (size_t)n <= b->cap_edge;
     for (int ty = p->y0 / TILE_SIZE; room && ty <= (p->y1 - 1) / TILE_SIZE; ty++)
         for (int tx = p->x0 / TILE_SIZE; room && tx <= (p->x1 - 1) / TILE_SIZE; tx++)
             room = b->bin[ty * b->tiles_x + tx].n < b->bin[ty * b->tiles_x + tx].cap;
     if (room) /* as nearly always: nothing to grow */
         return true;
-    void *poly = b->poly, *edge = b->edge, *corner = b->corner;
+    void *poly = b->poly, *edge = b->edge;
     bool ok = grow_array(&poly, &b->cap_poly, b->npoly + 1, sizeof *b->poly) &&
-              grow_array(&edge, &b->cap_edge, b->nedge + (size_t)n, sizeof *b->edge) &&
-              grow_array(&corner, &b->cap_corner, b->ncorner + (size_t)n, sizeof *b->corner);
-    b->poly = poly, b->edge = edge, b->corner = corner;
+              grow_array(&edge, &b->cap_edge, b->nedge + (size_t)n, sizeof *b->edge);
+    b->poly = poly, b->edge = edge;
     for (int ty = p->y0 / TILE_SIZE; ok && ty <= (p->y1 - 1) / TILE_SIZE; ty++)
         for (int tx = p->x0 / TILE_SIZE; ok && tx <= (p->x1 - 1) / TILE_SIZE; tx++) {
             Bin *bin = &b->bin[ty * b->tiles_x + tx];
@@ -73,7 +70,7 @@ void bins_empty(Bins *b)
     for (Bins *next; b; b = next) {
         for (int k = 0; k < b->tiles_x * b->tiles_y; k++)
             b->bin[k].n = 0;
-        b->npoly = b->nedge = b->ncorner = 0;
+        b->npoly = b->nedge = 0;
         next = b->next, b->next = NULL; /* the chain is made anew at each finish */
     }
 }
@@ -91,7 +88,7 @@ void bins_free(Bins *b)
     for (int k = 0; b && k < b->tiles_x * b->tiles_y; k++)
         free(b->bin[k].at);
     if (b)
-        free(b->bin), free(b->poly), free(b->edge), free(b->corner);
+        free(b->bin), free(b->poly), free(b->edge);
     free(b);
 }
 
@@ -194,138 +191,13 @@ void set_up_face(Target *t, LessonState *s, const ScreenFace *f, const DrawConte
     }
 }
 
-/* ---- Lesson 04's corners and walk -------------------------------------- */
+/* ---- A corner, one fragment, a block's depth ---------------------------- */
 
 bool corner_in_range(const ScreenVertex *v)
 {
     return isfinite(v->x) && isfinite(v->y) && isfinite(v->d) && v->d > 0 &&
            fabs(v->x) <= SCANLINE_MAX_COORD && fabs(v->y) <= SCANLINE_MAX_COORD;
 }
-
-void corners_range(const Corner *c, int n, Corner *lo, Corner *hi)
-{
-    *lo = c[0], *hi = c[0];
-    for (int k = 1; k < n; k++) {
-        lo->x = c[k].x < lo->x ? c[k].x : lo->x, hi->x = c[k].x > hi->x ? c[k].x : hi->x;
-        lo->y = c[k].y < lo->y ? c[k].y : lo->y, hi->y = c[k].y > hi->y ? c[k].y : hi->y;
-        lo->inv_d = c[k].inv_d < lo->inv_d ? c[k].inv_d : lo->inv_d;
-        hi->inv_d = c[k].inv_d > hi->inv_d ? c[k].inv_d : hi->inv_d;
-    }
-}
-
-/* Snapping moves a corner by up to 1/512 pixel; its 1/d moves along the
- * polygon's plane in (x, y, 1/d), as lesson 04 moves it. */
-void corners_on_plane(Corner *c, const ScreenVertex *v, int n)
-{
-    double w0 = c[0].inv_d, nx = 0, ny = 0, nz = 0;
-    for (int i = 1; i + 1 < n; i++) {
-        double ax = v[i].x - v[0].x, ay = v[i].y - v[0].y, aw = c[i].inv_d - w0;
-        double bx = v[i + 1].x - v[0].x, by = v[i + 1].y - v[0].y, bw = c[i + 1].inv_d - w0;
-        nx += ay * bw - aw * by;
-        ny += aw * bx - ax * bw;
-        nz += ax * by - ay * bx;
-    }
-    for (int i = 0; nz != 0 && i < n; i++) {
-        double dx = (double)c[i].x / S - v[i].x, dy = (double)c[i].y / S - v[i].y;
-        double change = -(nx * dx + ny * dy) / nz;
-        if (fabs(change) < c[i].inv_d)
-            c[i].inv_d += change;
-    }
-}
-
-static int64_t first_row_at_or_below(int64_t y) { return ceil_div(y - HALF_PIXEL, S); }
-
-bool edge_setup(Edge *e, int64_t ax, int64_t ay, double inv_a, int64_t bx, int64_t by,
-                double inv_b, int y_first)
-{
-    int64_t dx = bx - ax, dy = by - ay;
-    if (dy <= 0)
-        return false;
-    int64_t y0 = first_row_at_or_below(ay);
-    y0 = y0 < y_first ? y_first : y0;
-    e->y_end = (int)first_row_at_or_below(by);
-    if (y0 >= e->y_end)
-        return false;
-    int64_t yc = y0 * S + HALF_PIXEL, num = (ax - HALF_PIXEL) * dy + (yc - ay) * dx;
-    e->den = S * dy;
-    e->x_pixel = ceil_div(num, e->den);
-    e->rem = e->x_pixel * e->den - num;
-    e->step_pixel = floor_div(dx, dy);
-    e->step_rem = S * dx - e->step_pixel * e->den;
-    e->inv_d_step = (inv_b - inv_a) / ((double)dy / S);
-    e->inv_d = inv_a + ((double)(yc - ay) / S) * e->inv_d_step;
-    return true;
-}
-
-void edge_step(Edge *e)
-{
-    e->x_pixel += e->step_pixel;
-    e->rem -= e->step_rem;
-    if (e->rem < 0)
-        e->rem += e->den, e->x_pixel++;
-    e->inv_d += e->inv_d_step;
-}
-
-typedef struct { const Corner *c; int n, at, bottom, dir; } Chain;
-
-static bool chain_next_edge(Chain *c, int y, Edge *e)
-{
-    while (c->at != c->bottom) {
-        int next = (c->at + c->dir + c->n) % c->n;
-        Corner a = c->c[c->at], b = c->c[next];
-        c->at = next;
-        if (edge_setup(e, a.x, a.y, a.inv_d, b.x, b.y, b.inv_d, y))
-            return true;
-    }
-    return false;
-}
-
-/* Row y of lesson 04's span: 1/d stepped from its first pixel on the screen
- * as there, but only the tile's pixels tested. */
-static void walk_span(TileWork *w, const Poly *p, int y, const Edge *left, const Edge *right)
-{
-    int64_t x_first = left->x_pixel < 0 ? 0 : left->x_pixel;
-    int64_t x_stop = right->x_pixel > w->tx1 ? w->tx1 : right->x_pixel;
-    double left_frac = (double)left->rem / (double)left->den;
-    double width = (double)(right->x_pixel - left->x_pixel) + left_frac -
-                   (double)right->rem / (double)right->den;
-    double step = width > 0 ? (right->inv_d - left->inv_d) / width : 0.0;
-    double inv_d = left->inv_d + ((double)(x_first - left->x_pixel) + left_frac) * step;
-    for (int64_t x = x_first; x < x_stop; x++, inv_d += step)
-        if (x >= w->tx0 && inv_d >= p->inv_far)
-            test_pixel(w, &p->depth, (int)x, y);
-}
-
-/* Lesson 04's walk_edges from the polygon's first row on the screen down to
- * the tile's last, its spans drawn in the tile's rows. */
-void walk_in_tile(TileWork *w, const Poly *p, const Corner *c)
-{
-    int n = (int)p->n, top = 0, bottom = 0;
-    for (int i = 1; i < n; i++) {
-        top = c[i].y < c[top].y ? i : top;
-        bottom = c[i].y > c[bottom].y ? i : bottom;
-    }
-    Chain forward = {c, n, top, bottom, +1}, backward = {c, n, top, bottom, -1};
-    Chain *lc = p->turn > 0 ? &backward : &forward, *rc = p->turn > 0 ? &forward : &backward;
-    int64_t y_first = first_row_at_or_below(c[top].y), y_stop = first_row_at_or_below(c[bottom].y);
-    y_first = y_first < 0 ? 0 : y_first;
-    y_stop = y_stop > w->ty1 ? w->ty1 : y_stop;
-    Edge left, right;
-    if (y_first >= y_stop || !chain_next_edge(lc, (int)y_first, &left) ||
-        !chain_next_edge(rc, (int)y_first, &right))
-        return;
-    for (int y = (int)y_first; y < y_stop; y++) {
-        if ((y >= left.y_end && !chain_next_edge(lc, y, &left)) ||
-            (y >= right.y_end && !chain_next_edge(rc, y, &right)))
-            return;
-        if (y >= w->ty0)
-            walk_span(w, p, y, &left, &right);
-        edge_step(&left);
-        edge_step(&right);
-    }
-}
-
-/* ---- One fragment; a block's farthest value ---------------------------- */
 
 /* The fragment at (x, y): discarded where a cutout has a hole (as lesson
  * 08's late-Z: never tested), else z_w in lesson 06's order, its test and
@@ -391,14 +263,6 @@ void tile_work_end(TileWork *w)
     t->stats.tested += w->stats.tested;
     t->stats.passed += w->stats.passed;
     t->stats.failed += w->stats.tested - w->stats.passed;
-}
-
-void tile_read_again(TileWork *w)
-{
-    HierarchicalZ *h = w->hiz;
-    for (int y0 = w->ty0; h && y0 < w->ty1; y0 += BLOCK_SIZE)
-        for (int x0 = w->tx0; x0 < w->tx1; x0 += BLOCK_SIZE)
-            hiz_read_tile(h, &w->s->depth, w->t, y0 / BLOCK_SIZE * h->tiles_x + x0 / BLOCK_SIZE);
 }
 
 uint64_t long_edge_coverage(const EdgeFn *e, int64_t at)

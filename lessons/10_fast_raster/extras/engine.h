@@ -10,15 +10,15 @@
 #include "polygon.h"
 #include "scanline.h"
 
-typedef struct { int64_t x, y; double inv_d; } Corner; /* snapped, as lesson 04 */
+typedef struct { int64_t x, y; } Corner;            /* snapped, as lesson 04 */
 typedef struct { int64_t c; int32_t a, b; } EdgeFn;     /* a x + b y + c >= 0: inside */
 
 typedef struct {
     BlockDepth depth;
     int x0, y0, x1, y1;  /* the pixels it may cover, on the screen */
-    uint32_t first, n;   /* its edges (or, walked, its corners) in the bins */
-    bool walked, plain;  /* lesson 04's walk; a plane only plain C takes */
-    int turn; double inv_far;
+    uint32_t first, n;   /* its edges in the bins */
+    bool plain;          /* a plane only plain C takes */
+    int turn;
 } Poly;
 
 typedef struct { uint32_t *at; size_t n, cap; } Bin; /* polygons, in the order drawn */
@@ -28,7 +28,6 @@ struct Bins {
     Bins *next; /* the bins of faces set up after these (held.c) */
     Poly *poly; size_t npoly, cap_poly;
     EdgeFn *edge; size_t nedge, cap_edge;
-    Corner *corner; size_t ncorner, cap_corner;
     Bin *bin; /* one per tile, row by row */
 };
 
@@ -43,7 +42,7 @@ typedef struct { /* what one thread needs to draw a tile */
 uint64_t popcount(uint64_t mask);
 int64_t snap(double pixels); /* lesson 04's floor(pixels S + 1/2), without a call */
 
-/* engine.c: bins, set-up, lesson 04's walk, a fragment in plain C. */
+/* engine.c: bins, set-up, a fragment in plain C. */
 Bins *bins_of(Target *t, LessonState *s);
 bool bins_room(Bins *b, const Poly *p, int n); /* for p, of n corners */
 void bins_empty(Bins *b); /* and the bins chained after it, unchained */
@@ -53,14 +52,10 @@ void set_up_held_faces(Target *t, LessonState *s); /* held.c: by the threads, in
 /* p's plane and format; plain: not finite. */
 BlockDepth block_depth(const Primitive *p, bool *plain);
 bool corner_in_range(const ScreenVertex *v);
-void corners_on_plane(Corner *c, const ScreenVertex *v, int n);
-void corners_range(const Corner *c, int n, Corner *lo, Corner *hi); /* each least, largest */
-void walk_in_tile(TileWork *w, const Poly *p, const Corner *c);
 bool test_pixel(TileWork *w, const BlockDepth *d, int x, int y);
 Primitive plane_of(const TileWork *w, const BlockDepth *d); /* for hiz_bound: d's plane */
 void tile_work_begin(TileWork *w, Target *t, LessonState *s); /* the tile buffer, kernels */
 void tile_work_end(TileWork *w); /* its counts added to t's */
-void tile_read_again(TileWork *w); /* every block of the tile, after lesson 04's walk */
 uint64_t box_mask(int left, int right, int top, int bottom); /* of a block, each in 0..8 */
 typedef struct { int x, y; uint64_t box; } Window; /* 8 x 8 pixels at (x, y), of box */
 int windows_of(const TileWork *w, const Poly *p, Window win[4]); /* 0: p larger */
