@@ -5,7 +5,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-#include "scanline.h"
 #include "state.h"
 
 /* Farther: larger in the standard mapping, smaller in the reversed one. */
