@@ -51,8 +51,8 @@ COMPILE = $(CC) $(REQUIRED_CPPFLAGS) $(OBJ_INCLUDES) $(CPPFLAGS) \
 LINK    = $(CC) $(OPT) $(CFLAGS) $(MODE_CFLAGS) $(REQUIRED_CFLAGS) $(LDFLAGS)
 
 # Evaluated when a recipe runs, i.e. after tools/ensure-deps.sh has installed them.
-STB_CFLAGS    = $(shell pkg-config --cflags stb)
-STB_LIBS      = $(shell pkg-config --libs stb)
+STB_CFLAGS    = $(shell pkg-config --cflags stb zlib)
+STB_LIBS      = $(shell pkg-config --libs stb zlib)
 CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka)
 CMOCKA_LIBS   = $(shell pkg-config --libs cmocka)
 
@@ -137,6 +137,24 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(COMMON_OBJ) $(SUPPORT_OBJ) \
 	@mkdir -p $(@D)
 	$(LINK) $^ -o $@ -Wl,--wrap=_cmocka_run_group_tests $(CMOCKA_LIBS) $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 
+# Every fuzz target of tests/fuzz/ built with the ordinary compiler and
+# tests/fuzz/replay.c in place of libFuzzer: make test runs each on its
+# committed seeds (tests/tools/test_fuzz_seeds.c). Not with LESSON=, nor
+# where that test is not (a handout).
+FUZZ_REPLAY := $(if $(LESSON)$(if $(wildcard tests/tools/test_fuzz_seeds.c),,no),,$(patsubst tests/fuzz/fuzz_%.c,$(BUILD)/fuzz-replay/fuzz_%,\
+                                 $(wildcard tests/fuzz/fuzz_*.c)))
+$(BUILD)/fuzz-replay/fuzz_%: $(BUILD)/obj/tests/fuzz/fuzz_%.o $(BUILD)/obj/tests/fuzz/replay.o \
+                             $(COMMON_OBJ) $$(call lesson_objs,$$*)
+	@mkdir -p $(@D)
+	$(LINK) $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
+
+# The allocator that test_alloc_failure.c preloads into the lessons: never
+# with the sanitizers (their allocator must come first; the test skips).
+FAIL_ALLOC := $(if $(LESSON)$(if $(wildcard tests/tools/fail_alloc.c),,no),,$(BUILD)/tests/fail_alloc.so)
+$(BUILD)/tests/fail_alloc.so: tests/tools/fail_alloc.c
+	@mkdir -p $(@D)
+	$(CC) -O2 -fPIC -shared $(REQUIRED_CFLAGS) -Wno-missing-prototypes $< -o $@ -ldl
+
 # A file that an earlier build's dependency lists name but that is gone (a
 # copy that became an inherited file): nothing to make; the object that
 # named it is built again, with a new list.
@@ -163,7 +181,7 @@ run: $(BINS)
 # in order, and the final "N passed, M failed".
 # TEST=name becomes TEST_FILTER, which every test binary hands to cmocka's
 # test filter (tests/support/test_hooks.c): only the tests of that name run.
-test: $(BINS) $(TOOLS) $(TEST_BIN)
+test: $(BINS) $(TOOLS) $(TEST_BIN) $(FUZZ_REPLAY) $(FAIL_ALLOC)
 	@TEST_FILTER='$(TEST)' BIN_DIR=$(BUILD)/bin TOOL_DIR=$(BUILD)/tools TEST_OUTPUT=$(BUILD)/test-output \
 	    sh tools/run-tests.sh $(TEST_BIN)
 

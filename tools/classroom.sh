@@ -28,7 +28,7 @@ awk -v n="$number" '
     /^[ \t]*(#|$)/ { next }
     $2 + 0 > 0 {
         printf "%s    {\"name\": \"%s\", \"setup\": \"%s\", \"run\": \"make grade LESSON=%s TEST=%s\", \"input\": \"\", \"output\": \"\", \"comparison\": \"included\", \"timeout\": 10, \"points\": %s}",
-            count++ ? ",\n" : "", $1, count == 1 ? "sudo apt-get update && sudo apt-get install -y libstb-dev libcmocka-dev pkg-config" : "", n, $1, $2 + 0
+            count++ ? ",\n" : "", $1, count == 1 ? "sudo apt-get update && sudo apt-get install -y libstb-dev zlib1g-dev libcmocka-dev pkg-config" : "", n, $1, $2 + 0
     }
     BEGIN { print "{\"tests\": [" }
     END { print "\n]}" }' "$points" >"$dest.tmp"

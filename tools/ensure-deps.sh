@@ -29,9 +29,10 @@ done
 command -v pkg-config >/dev/null 2>&1 || missing="$missing pkg-config"
 if command -v pkg-config >/dev/null 2>&1; then
     pkg-config --exists stb    || missing="$missing libstb-dev"
+    pkg-config --exists zlib   || missing="$missing zlib1g-dev"
     pkg-config --exists cmocka || missing="$missing libcmocka-dev"
 else
-    missing="$missing libstb-dev libcmocka-dev"
+    missing="$missing libstb-dev zlib1g-dev libcmocka-dev"
 fi
 # Mesa's EGL (its glvnd vendor file) and its software driver (swrast_dri.so
 # holds llvmpipe) are found by file: they have no pkg-config file.
@@ -55,7 +56,7 @@ fi
 if ! command -v apt-get >/dev/null 2>&1; then
     echo "ensure-deps: missing:$missing" >&2
     echo "ensure-deps: this system has no apt-get; install these yourself" >&2
-    echo "ensure-deps: (libstb-dev: stb_image.h, stb_image_write.h and the pkg-config file 'stb')" >&2
+    echo "ensure-deps: (libstb-dev: stb_image.h and the pkg-config file 'stb'; zlib1g-dev: zlib.h)" >&2
     exit 1
 fi
 

@@ -9,7 +9,7 @@
 # them (main.c, clip.c, ..., extras/), common/, and a Makefile of a few lines:
 # `make` there builds the lesson's program with the series' flags, and
 # `make run` runs it into out/. It needs what the series needs: a C compiler,
-# make, pkg-config and Debian's libstb-dev.
+# make, pkg-config, and Debian's libstb-dev and zlib1g-dev.
 #
 # DEST defaults to BUILD/snapshot/<lesson>. An existing DEST is replaced only
 # if it is empty or an earlier snapshot (it holds the file .snapshot).
@@ -74,8 +74,8 @@ WARN   := -std=c11 -Wall -Wextra -Werror -pedantic -Wshadow -Wconversion -Wmissi
 SRC    := \$(wildcard *.c extras/*.c common/*.c common/harness/*.c)
 
 $name: \$(SRC) \$(wildcard *.h extras/*.h common/*.h common/harness/*.h)
-	\$(CC) -D_POSIX_C_SOURCE=200809L -I. -Icommon \$(shell pkg-config --cflags stb) \\
-	    \$(CFLAGS) \$(WARN) -ffp-contract=off \$(SRC) -o \$@ \$(shell pkg-config --libs stb) -lm -pthread
+	\$(CC) -D_POSIX_C_SOURCE=200809L -I. -Icommon \$(shell pkg-config --cflags stb zlib) \\
+	    \$(CFLAGS) \$(WARN) -ffp-contract=off \$(SRC) -o \$@ \$(shell pkg-config --libs stb zlib) -lm -pthread
 
 run: $name
 	mkdir -p out && ./$name

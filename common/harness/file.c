@@ -557,19 +557,28 @@ static const char *file_kind(mode_t mode)
     return "not a regular file";
 }
 
+/* "cannot read PATH: reason" for errno e, and errno e again for the caller. */
+static bool read_failed(Error *err, const char *path, int e)
+{
+    error_set(err, "cannot read %s: %s", path, strerror(e));
+    errno = e;
+    return false;
+}
+
 bool read_file(const char *path, size_t max_bytes, char **data, size_t *len, Error *err)
 {
     *data = NULL;
     *len = 0;
+    errno = 0; /* ENOMEM below: this call ran out of memory, not an earlier one */
     /* O_NONBLOCK: opening a pipe for reading would wait for a writer. */
     int fd = open(path, O_RDONLY | O_NONBLOCK);
     if (fd < 0)
-        return error_set(err, "cannot read %s: %s", path, strerror(errno));
+        return read_failed(err, path, errno);
     struct stat st;
     if (fstat(fd, &st) != 0) {
         int e = errno;
         close(fd);
-        return error_set(err, "cannot read %s: %s", path, strerror(e));
+        return read_failed(err, path, e);
     }
     if (!S_ISREG(st.st_mode)) {
         close(fd);
@@ -582,7 +591,7 @@ bool read_file(const char *path, size_t max_bytes, char **data, size_t *len, Err
     if (!fp) {
         int e = errno;
         close(fd);
-        return error_set(err, "cannot read %s: %s", path, strerror(e));
+        return read_failed(err, path, e);
     }
 
     char *buf = NULL;
@@ -594,7 +603,9 @@ bool read_file(const char *path, size_t max_bytes, char **data, size_t *len, Err
             if (!grown) {
                 free(buf);
                 fclose(fp);
-                return error_set(err, "cannot read %s: out of memory", path);
+                error_set(err, "cannot read %s: out of memory", path);
+                errno = ENOMEM; /* the caller may tell this from a file it cannot read */
+                return false;
             }
             buf = grown;
             cap = new_cap;
@@ -619,7 +630,7 @@ bool read_file(const char *path, size_t max_bytes, char **data, size_t *len, Err
         int e = errno;
         free(buf);
         fclose(fp);
-        return error_set(err, "cannot read %s: %s", path, strerror(e));
+        return read_failed(err, path, e);
     }
     fclose(fp);
     buf[size] = '\0';

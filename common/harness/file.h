@@ -42,7 +42,8 @@ void atomic_abort(AtomicFile *f);
 
 /* Whole file into a NUL-terminated buffer (the file may itself contain NULs:
  * *len says how long it is). Refuses files over max_bytes, and anything that
- * is not a regular file (a pipe, a device, a directory) without waiting. */
+ * is not a regular file (a pipe, a device, a directory) without waiting.
+ * On failure errno says why: ENOMEM when memory ran out, not the file. */
 bool read_file(const char *path, size_t max_bytes, char **data, size_t *len, Error *err);
 
 /* ---- which file a name means ----

@@ -14,7 +14,7 @@
 #include <string.h>
 
 #include <stb_image.h>
-#include <stb_image_write.h>
+#include <zlib.h>
 
 #include "file.h"
 
@@ -31,10 +31,113 @@ const Rgb DEPTH_BACKGROUND = {24, 32, 64}; /* dark blue: no grey looks like it *
 
 /* ---- PNG ---- */
 
-/* stb_image_write hands its output over in pieces: append each to the file. */
-static void write_to_atomic_file(void *context, void *data, int size)
+/* A PNG is its signature, then chunks: IHDR (size, 8-bit RGB), IDAT (the
+ * rows, each after a filter byte, compressed by zlib's deflate) and IEND.
+ * A chunk is its length, its type, its data and the CRC-32 of type and
+ * data, numbers big-endian. Each row takes the filter (PNG's five) whose
+ * bytes, read as signed, sum smallest in size, the usual heuristic: a
+ * smooth row becomes small differences that deflate well. Out of memory,
+ * zlib says so (Z_MEM_ERROR) and the picture is not written. */
+#define PNG_CHUNK 65536 /* compressed bytes per IDAT chunk */
+
+static void put_u32(unsigned char *p, uint32_t v)
 {
-    atomic_write(context, data, (size_t)size);
+    p[0] = (unsigned char)(v >> 24), p[1] = (unsigned char)(v >> 16);
+    p[2] = (unsigned char)(v >> 8), p[3] = (unsigned char)v;
+}
+
+static void write_chunk(AtomicFile *f, const char *type, const unsigned char *data, size_t n)
+{
+    unsigned char head[8], crc[4];
+    put_u32(head, (uint32_t)n);
+    memcpy(head + 4, type, 4);
+    uLong sum = crc32(crc32(0L, head + 4, 4), data, (uInt)n);
+    put_u32(crc, (uint32_t)sum);
+    atomic_write(f, head, sizeof head);
+    atomic_write(f, data, n);
+    atomic_write(f, crc, sizeof crc);
+}
+
+static int paeth(int a, int b, int c) /* the neighbour nearest a + b - c */
+{
+    int p = a + b - c, pa = abs(p - a), pb = abs(p - b), pc = abs(p - c);
+    return pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
+}
+
+/* Row `row` (n bytes; `up` the row above, or zeros) filtered by each filter
+ * into out[k] (filter byte first); the index of the smallest. */
+static int filter_row(const uint8_t *row, const uint8_t *up, size_t n, uint8_t *out[5])
+{
+    int best = 0;
+    unsigned long best_sum = ULONG_MAX;
+    for (int k = 0; k < 5; k++) {
+        unsigned long sum = 0;
+        out[k][0] = (uint8_t)k;
+        for (size_t i = 0; i < n; i++) {
+            int a = i >= IMAGE_CHANNELS ? row[i - IMAGE_CHANNELS] : 0, b = up[i];
+            int c = i >= IMAGE_CHANNELS ? up[i - IMAGE_CHANNELS] : 0;
+            int predict = k == 0 ? 0 : k == 1 ? a : k == 2 ? b : k == 3 ? (a + b) / 2 : paeth(a, b, c);
+            uint8_t v = (uint8_t)(row[i] - predict);
+            out[k][1 + i] = v;
+            sum += v < 128 ? v : 256u - v;
+        }
+        if (sum < best_sum)
+            best_sum = sum, best = k;
+    }
+    return best;
+}
+
+/* Deflates what z holds (flush: Z_NO_FLUSH or, last, Z_FINISH), each full
+ * output buffer one IDAT chunk. False: zlib ran out of memory. */
+static bool deflate_into(AtomicFile *f, z_stream *z, unsigned char *chunk, int flush)
+{
+    int status;
+    do {
+        z->next_out = chunk, z->avail_out = PNG_CHUNK;
+        status = deflate(z, flush);
+        if (status == Z_STREAM_ERROR || status == Z_MEM_ERROR)
+            return false;
+        if (z->avail_out < PNG_CHUNK)
+            write_chunk(f, "IDAT", chunk, PNG_CHUNK - z->avail_out);
+    } while (z->avail_out == 0 || (flush == Z_FINISH && status != Z_STREAM_END));
+    return true;
+}
+
+static bool encode_png(AtomicFile *f, const Image *im)
+{
+    static const unsigned char SIGNATURE[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    unsigned char ihdr[13] = {0};
+    put_u32(ihdr, (uint32_t)im->width);
+    put_u32(ihdr + 4, (uint32_t)im->height);
+    ihdr[8] = 8, ihdr[9] = 2; /* 8 bits, RGB; deflate, adaptive filters, no interlace */
+    atomic_write(f, SIGNATURE, sizeof SIGNATURE);
+    write_chunk(f, "IHDR", ihdr, sizeof ihdr);
+
+    size_t n = (size_t)im->width * IMAGE_CHANNELS;
+    uint8_t *work = malloc(6 * (n + 1) + PNG_CHUNK); /* five filtered rows, zeros, a chunk */
+    z_stream z = {0};
+    bool ok = work && deflateInit(&z, Z_DEFAULT_COMPRESSION) == Z_OK;
+    if (!ok) {
+        free(work);
+        return false;
+    }
+    uint8_t *out[5], *zeros = work + 5 * (n + 1), *chunk = zeros + n + 1;
+    for (int k = 0; k < 5; k++)
+        out[k] = work + (size_t)k * (n + 1);
+    memset(zeros, 0, n + 1);
+    for (int y = 0; ok && y < im->height; y++) {
+        const uint8_t *row = im->rgb + (size_t)y * n;
+        int k = filter_row(row, y > 0 ? row - n : zeros, n, out);
+        z.next_in = out[k], z.avail_in = (uInt)(n + 1);
+        ok = deflate_into(f, &z, chunk, Z_NO_FLUSH);
+    }
+    ok = ok && deflate_into(f, &z, chunk, Z_FINISH);
+    deflateEnd(&z);
+    free(work);
+    static const unsigned char none[1] = {0};
+    if (ok)
+        write_chunk(f, "IEND", none, 0);
+    return ok;
 }
 
 bool image_write_png(const Image *im, const char *path, Error *err)
@@ -45,9 +148,7 @@ bool image_write_png(const Image *im, const char *path, Error *err)
     if (!atomic_open(&f, path, err))
         return false;
     /* Row 0 is the top row in memory and in a PNG: no flip. */
-    int row_bytes = im->width * IMAGE_CHANNELS;
-    if (!stbi_write_png_to_func(write_to_atomic_file, &f, im->width, im->height,
-                                IMAGE_CHANNELS, im->rgb, row_bytes)) {
+    if (!encode_png(&f, im)) {
         atomic_abort(&f);
         return error_set(err, "cannot write %s: out of memory while encoding the PNG", path);
     }

@@ -1,6 +1,6 @@
 /* image_io.h: the pictures a lesson writes and a test reads.
  *
- *  - PNG write (stb_image_write) and read (stb_image, any PNG converted to RGB).
+ *  - PNG write (zlib's deflate) and read (stb_image, any PNG converted to RGB).
  *  - PFM: a float image, grey, little-endian, scale -1.0, rows bottom to top as
  *    the format says. The lessons write view depth d this way (--depth-out).
  *  - PGM: 16-bit binary P5, big-endian as the format says (--overdraw-out).

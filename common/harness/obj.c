@@ -431,7 +431,9 @@ static bool read_library(ObjReader *r, const char *lib, Error *err)
         ok = warn_at(r, l, err, "material library '%s' is not a regular file; ignored",
                      quote(lib).s);
     else if (!read_file(path, OBJ_MAX_BYTES, &text, &len, &why))
-        ok = warn_at(r, l, err, "material library '%s' not read: %s", quote(lib).s, why.msg);
+        ok = errno == ENOMEM /* not the file's fault: the run fails, colours are not lost */
+                 ? error_set(err, "%s", why.msg)
+                 : warn_at(r, l, err, "material library '%s' not read: %s", quote(lib).s, why.msg);
     else
         ok = note_library(r->m, path, err) && read_mtl_text(r, text, len, path, err) &&
              index_materials(r, err);

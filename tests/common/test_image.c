@@ -123,6 +123,39 @@ static void png_round_trip_keeps_every_pixel(void **state)
     image_free(&im);
 }
 
+/* Pictures that take every filter of the writer and more than one IDAT
+ * chunk: noise (incompressible: over 64 KB of deflated bytes), gradients
+ * (Sub, Up, Average, Paeth win rows) and a width of 1; stb_image, another
+ * decoder, reads each back pixel for pixel. */
+static void png_round_trip_of_noise_and_gradients(void **state)
+{
+    (void)state;
+    const char *path = path_join(test_dir("png_filters"), "p.png");
+    const int sizes[][2] = {{300, 200}, {1, 37}, {257, 3}};
+    uint32_t seed = 12345;
+    for (size_t k = 0; k < sizeof sizes / sizeof sizes[0]; k++)
+        for (int kind = 0; kind < 3; kind++) {
+            Image im = new_image(sizes[k][0], sizes[k][1]);
+            for (int y = 0; y < im.height; y++)
+                for (int x = 0; x < im.width; x++) {
+                    seed = seed * 1664525u + 1013904223u;
+                    Rgb noise = {(uint8_t)(seed >> 24), (uint8_t)(seed >> 16), (uint8_t)(seed >> 8)};
+                    Rgb ramp = {(uint8_t)(x * 3), (uint8_t)(y * 5), (uint8_t)(x + y)};
+                    image_set(&im, x, y, kind == 0 ? noise : kind == 1 ? ramp : (x + y) % 7 ? ramp : noise);
+                }
+            Error err;
+            assert_true(image_write_png(&im, path, &err));
+            int w, h, n;
+            unsigned char *px = stbi_load(path, &w, &h, &n, 3);
+            assert_non_null(px);
+            expect_count(im.width, w, "width read back");
+            expect_count(im.height, h, "height read back");
+            assert_memory_equal(px, im.rgb, (size_t)w * (size_t)h * 3);
+            stbi_image_free(px);
+            image_free(&im);
+        }
+}
+
 static void png_row_0_is_the_top_row_on_disk(void **state)
 {
     (void)state;
@@ -477,6 +510,7 @@ int main(void)
         cmocka_unit_test(image_init_rejects_sides_outside_1_to_16384),
         cmocka_unit_test(image_fill_sets_every_pixel),
         cmocka_unit_test(png_round_trip_keeps_every_pixel),
+        cmocka_unit_test(png_round_trip_of_noise_and_gradients),
         cmocka_unit_test(png_row_0_is_the_top_row_on_disk),
         cmocka_unit_test(png_read_converts_grey_to_rgb),
         cmocka_unit_test(png_read_of_missing_file_names_it),

@@ -49,7 +49,7 @@ typedef struct {
     size_t n;
 } FuzzBytes;
 
-static uint8_t fuzz_u8(FuzzBytes *b)
+static inline uint8_t fuzz_u8(FuzzBytes *b)
 {
     if (b->n == 0)
         return 0;
@@ -57,7 +57,7 @@ static uint8_t fuzz_u8(FuzzBytes *b)
     return *b->p++;
 }
 
-static uint16_t fuzz_u16(FuzzBytes *b)
+static inline uint16_t fuzz_u16(FuzzBytes *b)
 {
     uint16_t hi = fuzz_u8(b);
     return (uint16_t)(hi << 8 | fuzz_u8(b));
@@ -74,7 +74,7 @@ static const double SPECIAL[] = {
 };
 #define SPECIAL_COUNT ((int)(sizeof SPECIAL / sizeof SPECIAL[0]))
 
-static double fuzz_double(FuzzBytes *b)
+static inline double fuzz_double(FuzzBytes *b)
 {
     uint8_t tag = fuzz_u8(b);
     switch (tag % 4) {
@@ -95,7 +95,7 @@ static double fuzz_double(FuzzBytes *b)
     }
 }
 
-static void fuzz_check(bool ok, const char *what)
+static inline void fuzz_check(bool ok, const char *what)
 {
     if (!ok) {
         fprintf(stderr, "fuzz_raster: broken invariant: %s\n", what);
@@ -103,7 +103,7 @@ static void fuzz_check(bool ok, const char *what)
     }
 }
 
-static bool fuzz_corners_finite(const ScreenVertex *v, int n)
+static inline bool fuzz_corners_finite(const ScreenVertex *v, int n)
 {
     for (int k = 0; k < n; k++)
         if (!isfinite(v[k].x) || !isfinite(v[k].y) || !isfinite(v[k].d))
@@ -111,7 +111,7 @@ static bool fuzz_corners_finite(const ScreenVertex *v, int n)
     return true;
 }
 
-static void fuzz_check_books(const Target *t, const Rasterizer *rz, int nfaces)
+static inline void fuzz_check_books(const Target *t, const Rasterizer *rz, int nfaces)
 {
     size_t n = (size_t)t->width * (size_t)t->height;
     uint64_t overdraw = 0;
@@ -134,7 +134,7 @@ static void fuzz_check_books(const Target *t, const Rasterizer *rz, int nfaces)
     fuzz_check(overdraw == t->stats.tested, "overdraw counts add up to the fragments tested");
 }
 
-static int fuzz_rasterizer(const Rasterizer *rz, const uint8_t *data, size_t size)
+static inline int fuzz_rasterizer(const Rasterizer *rz, const uint8_t *data, size_t size)
 {
     FuzzBytes b = {data, size};
     uint8_t shape = fuzz_u8(&b);

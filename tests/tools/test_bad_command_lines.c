@@ -426,9 +426,9 @@ static void every_bad_command_line_is_refused_with_one_line_and_no_file(void **s
 /* ---- A disk that fills up while the picture is written ---------------------- */
 
 /* Far smaller than any lesson's default picture (the smallest, lesson 01's
- * 800x16 strip, is about 500 bytes as PNG), but room enough for the one
+ * 800x16 strip, is about 200 bytes as PNG), but room enough for the one
  * line of error the lesson prints into its captured stderr. */
-#define FILE_SIZE_LIMIT 256
+#define FILE_SIZE_LIMIT 128
 #define OLD_BYTES "the bytes of an earlier picture\n"
 
 static void full_disk_keeps_the_existing_picture(void **state)

@@ -2,4 +2,4 @@
 # setup.sh: what Gradescope runs once, to build the autograder's image.
 set -e
 apt-get update
-apt-get install -y build-essential libstb-dev libcmocka-dev pkg-config
+apt-get install -y build-essential libstb-dev zlib1g-dev libcmocka-dev pkg-config
