@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "error.h"
+#include "harness/file.h"
 #include "harness/font.h"
 #include "harness/image_io.h"
 
@@ -166,6 +167,11 @@ int main(int argc, char **argv)
     }
     if (argc != 4) {
         fprintf(stderr, PROGRAM ": error: expected IN.csv OUT.png \"Y AXIS LABEL\"\n");
+        return EXIT_USAGE;
+    }
+    if (same_file(argv[1], argv[2])) { /* by any name: the input stays as it was */
+        fprintf(stderr, PROGRAM ": error: OUT.png names the file IN.csv: the chart would "
+                        "replace its input\n");
         return EXIT_USAGE;
     }
     Chart c;

@@ -15,6 +15,7 @@
 
 #include "harness/cli.h"
 #include "error.h"
+#include "harness/file.h"
 #include "harness/image_io.h"
 
 #define PROGRAM "magnify"
@@ -91,6 +92,8 @@ int main(int argc, char **argv)
         }
     }
 
+    if (same_file(argv[1], argv[2])) /* by any name: the input stays as it was */
+        return usage_error("OUT.png names the file IN.png: the picture would replace its input");
     Image in, out;
     if (!image_read_png(&in, argv[1], &err))
         return error_report(PROGRAM, &err, EXIT_RUN_FAILED);

@@ -1,11 +1,13 @@
 #!/bin/sh
-# make-doc-images.sh [BUILD]: renders the pictures the lesson pages show into
-# docs/images/, with the lessons themselves. BUILD is the build directory
-# (default: build). One section per lesson; a lesson's pages name these files.
+# make-doc-images.sh [BUILD [IMAGES]]: renders the pictures the lesson pages
+# show into IMAGES (default: docs/images/), with the lessons themselves. BUILD
+# is the build directory (default: build). One section per lesson; a
+# lesson's pages name these files. tests/tools/test_doc_images.c renders
+# them into a directory of its own and compares them with docs/images/.
 set -eu
 cd "$(dirname "$0")/.."
 build=${1:-build}
-images=docs/images
+images=${2:-docs/images}
 mkdir -p "$images"
 # Where a render goes that only its --world-out picture is wanted from.
 tmp_out="$build/doc-images-render.png"
@@ -175,3 +177,14 @@ make -s BUILD="$build" "$build/bin/10_fast_raster" "$build/tools/bar_chart"
 "$build/tools/bar_chart" docs/data/10_steps.csv "$images/10_steps.png" \
     "ms per frame, 1 thread but where marked (less is faster)"
 echo "make-doc-images: 10_fast_raster done"
+
+# ---- docs/tools.md: the diff picture of --compare, and --steps of triangles3
+make -s BUILD="$build" "$build/bin/02_zbuffer"
+rm -rf "$images/tools_steps"
+"$build/bin/02_zbuffer" --bug separate-buffers --out "$build/doc-images-bug.png" \
+    --compare tests/expected/02_zbuffer/default.png >/dev/null || [ $? -eq 3 ] # they differ
+mv "$build/doc-images-bug.diff.png" "$images/tools_compare_diff.png"
+rm -f "$build/doc-images-bug.png"
+"$build/bin/02_zbuffer" --width 320 --height 240 --out "$tmp_out" --steps "$images/tools_steps" >/dev/null
+rm -f "$tmp_out"
+echo "make-doc-images: tools done"
