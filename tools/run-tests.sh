@@ -17,6 +17,9 @@ esac
 times_file=${TEST_OUTPUT:-build/test-output}/test-times
 
 work=$(mktemp -d) || exit 1
+# out/ is the student's: a test writes its pictures in a directory of its own.
+# What out/ holds before is compared with what it holds after.
+list_out() { find out -type f -exec ls -l --time-style=+%s.%N {} + 2>/dev/null | sort; }
 trap 'rm -rf "$work"' EXIT
 trap 'exit 130' INT
 trap 'exit 143' TERM
@@ -37,6 +40,7 @@ awk -v times="$times_file" '
 # One binary: its output into <index>.log, its exit status into <index>.status
 # (written last, by a rename: it says the log is complete), its seconds.
 # shellcheck disable=SC2016 # expanded by the inner sh
+list_out >"$work/out-before"
 [ $# -gt 0 ] && xargs -n 2 -P "$jobs" sh -c '
     start=$(date +%s)
     "$2" >"$0/$1.log" 2>&1
@@ -86,6 +90,12 @@ if [ -d "$(dirname "$times_file")" ] || mkdir -p "$(dirname "$times_file")" 2>/d
     mv "$work/all-times" "$times_file" 2>/dev/null || true
 fi
 
+list_out >"$work/out-after"
+if ! cmp -s "$work/out-before" "$work/out-after"; then
+    echo "run-tests: a test wrote into out/, the student's pictures (it must use test_dir):"
+    diff "$work/out-before" "$work/out-after" | sed -n 's/^> .* out\//  out\//p'
+    failed=$((failed + 1))
+fi
 [ -n "$broken" ] && echo "broken test binaries:$broken"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ] && [ "$passed" -gt 0 ]

@@ -68,10 +68,11 @@ static void no_arguments_writes_out_01_ybuffer_png(void **state)
 {
     (void)state;
     const char *args[] = {NULL};
-    RunResult r = run_program(PROGRAM, args);
+    const char *dir = test_dir("l01_default"); /* not the student's out/ */
+    RunResult r = run_program_in(dir, PROGRAM, args);
     expect_count(0, r.status, "exit status");
     assert_string_equal(r.out, DEFAULT_SUMMARY "wrote out/01_ybuffer.png\n");
-    assert_true(file_exists("out/01_ybuffer.png"));
+    assert_true(file_exists(path_join(dir, "out/01_ybuffer.png")));
     run_result_free(&r);
 }
 

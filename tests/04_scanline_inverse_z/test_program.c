@@ -33,14 +33,15 @@ static void default_run_draws_the_walls_and_finds_the_front_object(void **state)
 {
     (void)state;
     const char *args[] = {NULL};
-    RunResult r = run_program(PROGRAM, args);
+    const char *dir = test_dir("l04_default"); /* not the student's out/ */
+    RunResult r = run_program_in(dir, PROGRAM, args);
     assert_string_equal(r.err, "");
     expect_count(0, r.status, "exit status");
     expect_line(r.out, "04_scanline_inverse_z: scene walls (98 faces): ");
     expect_line(r.out, "  wrote out/04_scanline_inverse_z.png\n");
     expect_line(r.out, "  front object: face 97 at d = 42.002 at the screen centre (400,300)\n");
     run_result_free(&r);
-    Image im = read_png("out/04_scanline_inverse_z.png");
+    Image im = read_png(path_join(dir, "out/04_scanline_inverse_z.png"));
     expect_count(800, im.width, "picture width");
     expect_count(600, im.height, "picture height");
     expect_image(&im, GROUP, "default_render");

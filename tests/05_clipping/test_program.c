@@ -28,7 +28,8 @@ static void default_run_draws_the_room_to_the_screen_edges(void **state)
 {
     (void)state;
     const char *args[] = {NULL};
-    RunResult r = run_program(PROGRAM, args);
+    const char *dir = test_dir("l05_default"); /* not the student's out/ */
+    RunResult r = run_program_in(dir, PROGRAM, args);
     assert_string_equal(r.err, "");
     expect_count(0, r.status, "exit status");
     expect_line(r.out, "05_clipping: scene inside (42 faces): 76 triangles drawn, "
@@ -37,7 +38,7 @@ static void default_run_draws_the_room_to_the_screen_edges(void **state)
     expect_line(r.out, "  wrote out/05_clipping.png\n");
     expect_line(r.out, "  front object: face 10 at d = 15.530 at the screen centre (400,300)\n");
     run_result_free(&r);
-    Image im = read_png("out/05_clipping.png");
+    Image im = read_png(path_join(dir, "out/05_clipping.png"));
     expect_count(800, im.width, "picture width");
     expect_count(600, im.height, "picture height");
     expect_image(&im, GROUP, "default_render");

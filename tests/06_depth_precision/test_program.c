@@ -88,13 +88,15 @@ static void default_run_reports_steps_and_bands(void **state)
 {
     (void)state;
     const char *args[] = {NULL};
-    char *out = run_ok(PROGRAM, args);
+    RunResult r = run_program_in(test_dir("l06_default"), PROGRAM, args); /* not into out/ */
+    expect_count(0, r.status, "exit status");
+    const char *out = r.out;
     expect_line(out, "06_depth_precision: scene ladder (12 faces)");
     expect_line(out, "  depth step (unorm24, standard, near 0.1, far 1000): d = 1: 5.96e-07, "
                      "d = 10: 5.96e-05, d = 100: 0.00596, d = 300: 0.0536\n");
     expect_line(out, "  back plate wins (gap 0.05): d = 1: 0.000, d = 3: 0.000, d = 10: 0.000, "
                      "d = 30: 0.000, d = 100: 0.000, d = 300: 0.572\n");
-    free(out);
+    run_result_free(&r);
 }
 
 /* Lesson 05's picture, face for face, at float32 (reversed) on every other

@@ -250,10 +250,13 @@ static char *slurp(FILE *fp)
 /* In the child: stdin from /dev/null, stdout and stderr to the files, then exec.
  * If exec fails, its errno goes back through report_fd (closed by a
  * successful exec, as it is close-on-exec). */
+/* The directory the next child runs in (run_program_in), or NULL: this one. */
+static const char *child_dir;
+
 static void exec_child(const char *path, char **argv, FILE *out, FILE *err, int report_fd)
 {
     int null_fd = open("/dev/null", O_RDONLY);
-    if (null_fd < 0 || dup2(null_fd, STDIN_FILENO) < 0 ||
+    if ((child_dir && chdir(child_dir) != 0) || null_fd < 0 || dup2(null_fd, STDIN_FILENO) < 0 ||
         dup2(fileno(out), STDOUT_FILENO) < 0 || dup2(fileno(err), STDERR_FILENO) < 0) {
         int e = errno;
         (void)!write(report_fd, &e, sizeof e);
@@ -338,6 +341,14 @@ static RunResult run_in(const char *dir, const char *program, const char *const 
 RunResult run_program(const char *program, const char *const *args)
 {
     return run_in(env_or("BIN_DIR", "build/bin"), program, args);
+}
+
+RunResult run_program_in(const char *dir, const char *program, const char *const *args)
+{
+    child_dir = dir;
+    RunResult r = run_in(abs_bin_dir(), program, args);
+    child_dir = NULL;
+    return r;
 }
 
 RunResult run_tool(const char *program, const char *const *args)
