@@ -1,8 +1,8 @@
-/* diagrams: the explanatory pictures of lessons 02 to 04, drawn by code.
+/* diagrams: the explanatory pictures of the lessons, drawn by code.
  *
  *   diagrams DIR
  *
- * writes three PNGs into DIR (which must exist):
+ * writes these PNGs into DIR (which must exist):
  *   02_edge_functions.png    900 x 500  a 12 x 8 pixel grid, 40 pixels to a pixel:
  *                            triangle A with its edge functions' signs, its
  *                            neighbour B, every pixel centre in or out, and the
@@ -13,6 +13,10 @@
  *   04_edge_walk.png         820 x 600  a convex polygon on a 12 x 9 grid, its left
  *                            and right edges crossing each row centre, and the
  *                            span of row 5
+ *   06_depth_curve.png       900 x 580  window depth z_w against view depth d,
+ *                            near 1, far 100, in the standard and the reversed
+ *                            mapping (docs/conventions.md), and a zoom on d from
+ *                            90 to 92 with the unorm16 codes stored there
  * Exit status: 0 written, 1 could not write, 2 bad usage.
  *
  * Coverage is decided by the lessons' rule, exactly: corners snapped to 1/256
@@ -21,7 +25,8 @@
  * 02's edge functions. tests/tools/test_diagrams.c draws the same shapes with
  * build/bin/02_zbuffer and 04_scanline_inverse_z and reads the pictures back:
  * what it reads (grid positions, dot colours, the plot's frame and the 1/d
- * colour) is marked "read by the test" below. */
+ * colour) is marked "read by the test" below; the depth curves it checks
+ * against the mappings' formulas. */
 #include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
@@ -659,6 +664,131 @@ static void draw_edge_walk(Image *im)
     legend_text(im, lx, y0 + 72, "centres outside every span: not drawn");
 }
 
+/* ---- 06: window depth against view depth ------------------------------------ */
+
+#define E06_WIDTH 900
+#define E06_HEIGHT 580
+#define E06_LEFT 90 /* the main plot's frame (read by the test) */
+#define E06_RIGHT 520
+#define E06_TOP 140
+#define E06_BOTTOM 480
+#define E06_ZOOM_LEFT 620 /* the zoom's frame (read by the test) */
+#define E06_ZOOM_RIGHT 860
+#define E06_NEAR 1.0 /* the planes of both plots (read by the test) */
+#define E06_FAR 100.0
+#define E06_ZOOM_D0 90.0 /* the zoom: d from 90 to 92, z_w over the codes there */
+#define E06_ZOOM_D1 92.0
+#define E06_UNORM16 65535.0
+
+static const Rgb STANDARD_COLOUR = {255, 150, 50}; /* read by the test */
+static const Rgb REVERSED_COLOUR = {90, 220, 255}; /* read by the test */
+static const Rgb CODE_COLOUR = {120, 230, 120};    /* unorm16's steps (read by the test) */
+
+/* docs/conventions.md's mappings: z_w = f/(f-n) (1 - n/d) and n/(f-n) (f/d - 1). */
+static double standard_z(double d) { return E06_FAR / (E06_FAR - E06_NEAR) * (1 - E06_NEAR / d); }
+static double reversed_z(double d) { return E06_NEAR / (E06_FAR - E06_NEAR) * (E06_FAR / d - 1); }
+
+static double e06_x(double d) { return E06_LEFT + d / E06_FAR * (E06_RIGHT - E06_LEFT); }
+static double e06_y(double z) { return E06_BOTTOM - z * (E06_BOTTOM - E06_TOP); }
+
+/* The zoom's range of z_w: the standard mapping's over d in [90, 92], to whole codes. */
+static double zoom_z0(void) { return floor(standard_z(E06_ZOOM_D0) * E06_UNORM16) / E06_UNORM16; }
+static double zoom_z1(void) { return ceil(standard_z(E06_ZOOM_D1) * E06_UNORM16) / E06_UNORM16; }
+static double zoom_x(double d)
+{
+    return E06_ZOOM_LEFT + (d - E06_ZOOM_D0) / (E06_ZOOM_D1 - E06_ZOOM_D0) *
+                               (E06_ZOOM_RIGHT - E06_ZOOM_LEFT);
+}
+static double zoom_y(double z)
+{
+    return E06_BOTTOM - (z - zoom_z0()) / (zoom_z1() - zoom_z0()) * (E06_BOTTOM - E06_TOP);
+}
+
+static void frame(Image *im, int left, int top, int right, int bottom)
+{
+    line(im, left, bottom, right, bottom, 0.5, 0, AXIS_COLOUR);
+    line(im, left, top, left, bottom, 0.5, 0, AXIS_COLOUR);
+}
+
+static void draw_depth_curve(Image *im)
+{
+    image_fill(im, BACKGROUND);
+    char text[MAX_LABEL];
+    text_at(im, 20, 14, "Window depth z_w against view depth d (near 1, far 100)", TEXT_SCALE,
+            TEXT);
+    line(im, 20, 53, 56, 53, 1.6, 0, STANDARD_COLOUR);
+    text_at(im, 64, 46, "standard: half the codes by d = 2", TEXT_SCALE, STANDARD_COLOUR);
+    line(im, 20, 77, 56, 77, 1.6, 0, REVERSED_COLOUR);
+    text_at(im, 64, 70, "reversed: 1 at near, 0 at far", TEXT_SCALE, REVERSED_COLOUR);
+    line(im, 20, 101, 56, 101, 1.1, 5, NAIVE_COLOUR);
+    text_at(im, 64, 94, "(d - n) / (f - n): linear, for comparison", TEXT_SCALE, NAIVE_COLOUR);
+
+    /* The main plot: d from 0 to 100 along the bottom, z_w from 0 to 1. */
+    frame(im, E06_LEFT, E06_TOP, E06_RIGHT, E06_BOTTOM);
+    for (int d = 0; d <= 100; d += 20) {
+        double x = e06_x(d);
+        line(im, x, E06_BOTTOM, x, E06_BOTTOM + 6, 0.5, 0, AXIS_COLOUR);
+        snprintf(text, sizeof text, "%d", d);
+        text_at(im, (int)lround(x) - scaled_width(text, TEXT_SCALE) / 2, E06_BOTTOM + 12, text,
+                TEXT_SCALE, AXIS_COLOUR);
+    }
+    for (int k = 0; k <= 4; k++) {
+        double y = e06_y(k / 4.0);
+        line(im, E06_LEFT - 6, y, E06_LEFT, y, 0.5, 0, AXIS_COLOUR);
+        snprintf(text, sizeof text, "%.2f", k / 4.0);
+        text_at(im, E06_LEFT - 12 - scaled_width(text, TEXT_SCALE), (int)lround(y) - 7, text,
+                TEXT_SCALE, AXIS_COLOUR);
+    }
+    text_at(im, (E06_LEFT + E06_RIGHT) / 2 - 60, E06_BOTTOM + 40, "view depth d", TEXT_SCALE,
+            AXIS_COLOUR);
+    text_at(im, E06_LEFT - 80, (E06_TOP + E06_BOTTOM) / 2 - 30, "z_w", TEXT_SCALE, AXIS_COLOUR);
+    line(im, e06_x(E06_NEAR), e06_y(0), e06_x(E06_FAR), e06_y(1), 1.1, 6, NAIVE_COLOUR);
+    /* Where the zoom looks, on the standard curve (under it). */
+    line(im, e06_x(E06_ZOOM_D0), e06_y(standard_z(E06_ZOOM_D0)) - 14, e06_x(E06_ZOOM_D0),
+         e06_y(standard_z(E06_ZOOM_D0)) + 14, 0.5, 0, CODE_COLOUR);
+    line(im, e06_x(E06_ZOOM_D1), e06_y(standard_z(E06_ZOOM_D1)) - 14, e06_x(E06_ZOOM_D1),
+         e06_y(standard_z(E06_ZOOM_D1)) + 14, 0.5, 0, CODE_COLOUR);
+
+    double px = 0, ps = 0, pr = 0;
+    for (int i = 0; i <= 800; i++) { /* d from near to far, finely where the curves bend */
+        double d = E06_NEAR * pow(E06_FAR / E06_NEAR, i / 800.0);
+        double x = e06_x(d), ys = e06_y(standard_z(d)), yr = e06_y(reversed_z(d));
+        if (i > 0)
+            line(im, px, ps, x, ys, 1.6, 0, STANDARD_COLOUR),
+                line(im, px, pr, x, yr, 1.6, 0, REVERSED_COLOUR);
+        px = x, ps = ys, pr = yr;
+    }
+    /* The zoom: d from 90 to 92, the standard curve and what unorm16 stores. */
+    frame(im, E06_ZOOM_LEFT, E06_TOP, E06_ZOOM_RIGHT, E06_BOTTOM);
+    text_at(im, E06_ZOOM_LEFT - 40, 70, "zoom: d from 90 to 92,", TEXT_SCALE, CODE_COLOUR);
+    text_at(im, E06_ZOOM_LEFT - 40, 94, "the codes unorm16 stores", TEXT_SCALE, CODE_COLOUR);
+    for (double d = E06_ZOOM_D0; d <= E06_ZOOM_D1 + 1e-9; d += 1) {
+        double x = zoom_x(d);
+        line(im, x, E06_BOTTOM, x, E06_BOTTOM + 6, 0.5, 0, AXIS_COLOUR);
+        snprintf(text, sizeof text, "%g", d);
+        text_at(im, (int)lround(x) - scaled_width(text, TEXT_SCALE) / 2, E06_BOTTOM + 12, text,
+                TEXT_SCALE, AXIS_COLOUR);
+    }
+    long codes = lround(nearbyint(standard_z(E06_ZOOM_D1) * E06_UNORM16) -
+                        nearbyint(standard_z(E06_ZOOM_D0) * E06_UNORM16)) + 1; /* stored there */
+    snprintf(text, sizeof text, "%ld codes", codes);
+    text_at(im, E06_ZOOM_LEFT + 60, E06_BOTTOM + 40, text, TEXT_SCALE, CODE_COLOUR);
+    double qx = 0, qy = 0, sy = 0;
+    int columns = E06_ZOOM_RIGHT - E06_ZOOM_LEFT;
+    for (int i = 0; i <= columns; i++) {
+        double d = E06_ZOOM_D0 + (E06_ZOOM_D1 - E06_ZOOM_D0) * i / columns, x = zoom_x(d);
+        double stored = nearbyint(standard_z(d) * E06_UNORM16) / E06_UNORM16;
+        double y = zoom_y(standard_z(d)), ys = zoom_y(stored);
+        if (i > 0) {
+            line(im, qx, sy, x, sy, 1.6, 0, CODE_COLOUR); /* a step, then its rise */
+            if (ys != sy)
+                line(im, x, sy, x, ys, 0.8, 0, CODE_COLOUR);
+            line(im, qx, qy, x, y, 1.0, 0, STANDARD_COLOUR);
+        }
+        qx = x, qy = y, sy = ys;
+    }
+}
+
 /* ---- Writing them ---------------------------------------------------------------- */
 
 typedef struct {
@@ -671,14 +801,15 @@ static const Diagram DIAGRAMS[] = {
     {"02_edge_functions.png", E02_WIDTH, E02_HEIGHT, draw_edge_functions},
     {"03_depth_along_a_row.png", E03_WIDTH, E03_HEIGHT, draw_depth_along_a_row},
     {"04_edge_walk.png", E04_WIDTH, E04_HEIGHT, draw_edge_walk},
+    {"06_depth_curve.png", E06_WIDTH, E06_HEIGHT, draw_depth_curve},
 };
 
 int main(int argc, char **argv)
 {
     if (argc == 2 && strcmp(argv[1], "--help") == 0) {
         printf("usage: " PROGRAM " DIR\n"
-               "Writes the diagrams of lessons 02 to 04 into DIR: 02_edge_functions.png,\n"
-               "03_depth_along_a_row.png and 04_edge_walk.png.\n");
+               "Writes the lessons' diagrams into DIR: 02_edge_functions.png,\n"
+               "03_depth_along_a_row.png, 04_edge_walk.png and 06_depth_curve.png.\n");
         return EXIT_OK;
     }
     if (argc != 2 || argv[1][0] == '\0' || argv[1][0] == '-') {

@@ -58,6 +58,19 @@ static const Point HEXAGON[6] = {{5.25, 0.75}, {9.5, 2.25}, {10.75, 6.0},
 #define E03_PLOT_TOP 100
 #define E03_PLOT_BOTTOM 440
 
+/* 06_depth_curve.png: the main plot's and the zoom's frames, the planes. */
+#define E06_LEFT 90
+#define E06_RIGHT 520
+#define E06_TOP 140
+#define E06_BOTTOM 480
+#define E06_ZOOM_LEFT 620
+#define E06_ZOOM_RIGHT 860
+#define E06_NEAR 1.0
+#define E06_FAR 100.0
+static const Rgb STANDARD_COLOUR = {255, 150, 50};
+static const Rgb REVERSED_COLOUR = {90, 220, 255};
+static const Rgb CODE_COLOUR = {120, 230, 120};
+
 static bool same(Rgb a, Rgb b) { return a.r == b.r && a.g == b.g && a.b == b.b; }
 
 /* Runs the tool into a fresh directory; returns the directory. */
@@ -81,6 +94,7 @@ static void diagrams_are_written_at_their_documented_sizes(void **state)
         {"02_edge_functions.png", 900, 500},
         {"03_depth_along_a_row.png", 820, 520},
         {"04_edge_walk.png", 820, 600},
+        {"06_depth_curve.png", 900, 580},
     };
     for (size_t i = 0; i < sizeof expected / sizeof expected[0]; i++) {
         Image im = read_png(path_join(dir, expected[i].file));
@@ -276,6 +290,72 @@ static void depth_plot_shows_inverse_depth_straight_and_depth_curved(void **stat
     image_free(&im);
 }
 
+/* The mean row of the pixels of colour c in column x, rows top .. bottom; NAN if none. */
+static double mean_row(const Image *im, Rgb c, int x, int top, int bottom)
+{
+    double sum = 0;
+    int count = 0;
+    for (int y = top; y <= bottom; y++)
+        if (same(image_get(im, x, y), c))
+            sum += y, count++;
+    return count ? sum / count : NAN;
+}
+
+/* The curves follow docs/conventions.md's mappings, computed here from the
+ * page's formulas: z_w = f/(f-n) (1 - n/d) and n/(f-n) (f/d - 1), n = 1,
+ * f = 100; the zoom steps once per unorm16 code between d = 90 and 92. */
+static void depth_curve_follows_both_mappings_and_steps_per_code(void **state)
+{
+    (void)state;
+    const char *dir = draw_diagrams("diagrams_06");
+    Image im = read_png(path_join(dir, "06_depth_curve.png"));
+    double n = E06_NEAR, f = E06_FAR, worst = 0;
+    int checked = 0;
+    for (int x = E06_LEFT + 10; x < E06_RIGHT - 4; x++) {
+        double d = (x + 0.5 - E06_LEFT) / (E06_RIGHT - E06_LEFT) * f;
+        if (d < 4)
+            continue; /* where the two curves cross */
+        double zs = f / (f - n) * (1 - n / d), zr = n / (f - n) * (f / d - 1);
+        double ys = mean_row(&im, STANDARD_COLOUR, x, E06_TOP - 4, E06_BOTTOM);
+        double yr = mean_row(&im, REVERSED_COLOUR, x, E06_TOP - 4, E06_BOTTOM);
+        double want_s = E06_BOTTOM - zs * (E06_BOTTOM - E06_TOP);
+        double want_r = E06_BOTTOM - zr * (E06_BOTTOM - E06_TOP);
+        if (isnan(ys) || isnan(yr))
+            fail_msg("column %d (d = %.2f): a curve is missing", x, d);
+        worst = fmax(worst, fmax(fabs(ys + 0.5 - want_s), fabs(yr + 0.5 - want_r)));
+        checked++;
+    }
+    if (worst > 2.0)
+        fail_msg("the curves stray %.2f rows from the mappings' formulas (at most 2)", worst);
+    if (checked < 300)
+        fail_msg("only %d columns checked", checked);
+
+    /* The zoom: the level of each column's step (a column where the code
+     * colour runs taller than a step's line is a rise: skipped), counted
+     * where it changes; the codes from the formula. */
+    int steps = 0, codes = 0;
+    double last_row = NAN, last_code = NAN;
+    for (int x = E06_ZOOM_LEFT + 2; x < E06_ZOOM_RIGHT - 2; x++) {
+        int top = -1, bottom = -1;
+        for (int y = E06_TOP - 4; y <= E06_BOTTOM; y++)
+            if (same(image_get(&im, x, y), CODE_COLOUR))
+                bottom = y, top = top < 0 ? y : top;
+        double row = top >= 0 && bottom - top <= 4 ? (top + bottom) / 2.0 : NAN;
+        if (!isnan(row) && (isnan(last_row) || fabs(row - last_row) > 2))
+            steps++;
+        if (!isnan(row))
+            last_row = row;
+        double d = 90 + 2.0 * (x + 0.5 - E06_ZOOM_LEFT) / (E06_ZOOM_RIGHT - E06_ZOOM_LEFT);
+        double code = nearbyint(f / (f - n) * (1 - n / d) * 65535.0);
+        codes += code != last_code;
+        last_code = code;
+    }
+    if (abs(steps - codes) > 1)
+        fail_msg("the zoom shows %d steps; unorm16 has %d codes between d = 90 and 92", steps,
+                 codes);
+    image_free(&im);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -284,6 +364,7 @@ int main(void)
         cmocka_unit_test(edge_function_grid_shows_what_lesson_02_draws),
         cmocka_unit_test(edge_walk_grid_shows_what_lesson_04_draws),
         cmocka_unit_test(depth_plot_shows_inverse_depth_straight_and_depth_curved),
+        cmocka_unit_test(depth_curve_follows_both_mappings_and_steps_per_code),
     };
     return cmocka_run_group_tests_name("tools: diagrams", tests, NULL, NULL);
 }
