@@ -13,6 +13,10 @@
  *   04_edge_walk.png         820 x 600  a convex polygon on a 12 x 9 grid, its left
  *                            and right edges crossing each row centre, and the
  *                            span of row 5
+ *   05_clipping_cases.png    920 x 420  a triangle against the near plane, seen
+ *                            from above, with 3, 2, 1 and 0 corners in front:
+ *                            what is drawn and its corners (the test clips the
+ *                            same triangles with lesson 05's clip_to_plane)
  *   06_depth_curve.png       900 x 580  window depth z_w against view depth d,
  *                            near 1, far 100, in the standard and the reversed
  *                            mapping (docs/conventions.md), and a zoom on d from
@@ -664,6 +668,121 @@ static void draw_edge_walk(Image *im)
     legend_text(im, lx, y0 + 72, "centres outside every span: not drawn");
 }
 
+/* ---- 05: a triangle against the near plane, in each of its four cases -------- */
+
+#define E05_WIDTH 920
+#define E05_HEIGHT 420
+#define E05_PANELS 4
+#define E05_PANEL_LEFT 20  /* panel k spans x from 20 + 225 k, 215 wide (read by the test) */
+#define E05_PANEL_STEP 225
+#define E05_PANEL_WIDTH 215
+#define E05_PANEL_TOP 70   /* d = 4 at the top, d = 0 (the eye) at the bottom (read by the test) */
+#define E05_PANEL_BOTTOM 330
+#define E05_NEAR 1.0       /* the near plane, in view depth d (read by the test) */
+#define E05_X_RANGE 2.2    /* x from -2.2 to 2.2 across a panel (read by the test) */
+#define E05_D_RANGE 4.0
+
+static const Rgb BEHIND = {44, 36, 46};
+static const Rgb NEAR_COLOUR = {255, 235, 60};
+static const Rgb KEPT_CELL = {50, 90, 140};
+static const Rgb KEPT_EDGE = {90, 200, 255};
+static const Rgb CUT_EDGE = {150, 154, 166};
+static const Rgb CORNER_COLOUR = {255, 120, 200}; /* a corner of what is kept (read by the test) */
+
+/* Each panel's triangle, (x, d) in view space: 3, 2, 1 and 0 corners in front
+ * of the near plane (read by the test, which clips them with lesson 05). */
+static const Point E05_TRIANGLE[E05_PANELS][3] = {
+    {{-1.2, 1.8}, {1.3, 2.3}, {0.1, 3.6}},
+    {{-1.4, 0.4}, {1.3, 1.8}, {-0.2, 3.4}},
+    {{-1.4, 0.3}, {1.5, 0.5}, {0.2, 3.0}},
+    {{-1.2, 0.2}, {1.3, 0.6}, {0.1, 0.85}},
+};
+static const char *const E05_CAPTION[E05_PANELS][2] = {
+    {"3 in front:", "kept, 3 corners"}, {"2 in front:", "4 corners"},
+    {"1 in front:", "3 corners"},       {"0 in front:", "nothing drawn"},
+};
+
+static double e05_x(int panel, double x)
+{
+    return E05_PANEL_LEFT + E05_PANEL_STEP * panel + (x / E05_X_RANGE + 1) / 2 * E05_PANEL_WIDTH;
+}
+static double e05_y(double d)
+{
+    return E05_PANEL_BOTTOM - d / E05_D_RANGE * (E05_PANEL_BOTTOM - E05_PANEL_TOP);
+}
+
+/* The part of polygon p (n corners) with d >= near: one pass of
+ * Sutherland-Hodgman, each crossing found from the corner in front. */
+static int keep_in_front(const Point *p, int n, Point *out)
+{
+    int m = 0;
+    for (int i = 0; i < n; i++) {
+        Point a = p[i], b = p[(i + 1) % n];
+        bool a_in = a.y >= E05_NEAR, b_in = b.y >= E05_NEAR;
+        if (a_in)
+            out[m++] = a;
+        if (a_in != b_in) {
+            Point in = a_in ? a : b, away = a_in ? b : a;
+            double t = (in.y - E05_NEAR) / (in.y - away.y);
+            out[m++] = (Point){in.x + t * (away.x - in.x), E05_NEAR};
+        }
+    }
+    return m;
+}
+
+/* Fills polygon q (picture coordinates): every pixel whose centre is inside. */
+static void fill_polygon(Image *im, const Point *q, int n, Rgb c)
+{
+    for (int y = 0; y < im->height; y++)
+        for (int x = 0; x < im->width; x++) {
+            bool inside = n >= 3;
+            for (int i = 0; i < n && inside; i++) {
+                Point a = q[i], b = q[(i + 1) % n];
+                double cross = (b.x - a.x) * (y + 0.5 - a.y) - (b.y - a.y) * (x + 0.5 - a.x);
+                inside = cross <= 0; /* the corners go counterclockwise in the picture */
+            }
+            if (inside)
+                put(im, x, y, c);
+        }
+}
+
+static void draw_clipping_cases(Image *im)
+{
+    image_fill(im, BACKGROUND);
+    text_at(im, 20, 14, "A triangle against the near plane, seen from above (x across, d up)",
+            TEXT_SCALE, TEXT);
+    line(im, 20, 45, 56, 45, 1.6, 6, NEAR_COLOUR);
+    text_at(im, 64, 38, "near plane d = 1", TEXT_SCALE, NEAR_COLOUR);
+    line(im, 270, 45, 306, 45, 1.0, 0, CUT_EDGE);
+    text_at(im, 314, 38, "the triangle", TEXT_SCALE, CUT_EDGE);
+    fill_rect(im, 480, 38, 516, 52, KEPT_CELL);
+    text_at(im, 524, 38, "what is drawn", TEXT_SCALE, KEPT_EDGE);
+    disc(im, 716, 45, 5, CORNER_COLOUR);
+    text_at(im, 728, 38, "its corners", TEXT_SCALE, CORNER_COLOUR);
+    for (int k = 0; k < E05_PANELS; k++) {
+        int left = E05_PANEL_LEFT + E05_PANEL_STEP * k, right = left + E05_PANEL_WIDTH;
+        fill_rect(im, left, (int)e05_y(E05_NEAR), right, E05_PANEL_BOTTOM, BEHIND);
+        Point kept[4], q[4], t[3];
+        int m = keep_in_front(E05_TRIANGLE[k], 3, kept);
+        for (int i = 0; i < m; i++)
+            q[i] = (Point){e05_x(k, kept[i].x), e05_y(kept[i].y)};
+        if (m >= 3) /* counterclockwise in the picture, as fill_polygon takes it */
+            fill_polygon(im, q, m, KEPT_CELL);
+        for (int i = 0; i < 3; i++)
+            t[i] = (Point){e05_x(k, E05_TRIANGLE[k][i].x), e05_y(E05_TRIANGLE[k][i].y)};
+        for (int i = 0; i < 3; i++)
+            line(im, t[i].x, t[i].y, t[(i + 1) % 3].x, t[(i + 1) % 3].y, 1.0, 0, CUT_EDGE);
+        for (int i = 0; i < m; i++)
+            line(im, q[i].x, q[i].y, q[(i + 1) % m].x, q[(i + 1) % m].y, 1.4, 0, KEPT_EDGE);
+        line(im, left, e05_y(E05_NEAR), right, e05_y(E05_NEAR), 1.6, 6, NEAR_COLOUR);
+        for (int i = 0; i < m; i++)
+            disc(im, q[i].x, q[i].y, 5, CORNER_COLOUR);
+        disc(im, (left + right) / 2.0, E05_PANEL_BOTTOM - 4, 4, TEXT); /* the eye */
+        text_at(im, left + 8, E05_PANEL_BOTTOM + 14, E05_CAPTION[k][0], TEXT_SCALE, TEXT);
+        text_at(im, left + 8, E05_PANEL_BOTTOM + 38, E05_CAPTION[k][1], TEXT_SCALE, KEPT_EDGE);
+    }
+}
+
 /* ---- 06: window depth against view depth ------------------------------------ */
 
 #define E06_WIDTH 900
@@ -801,6 +920,7 @@ static const Diagram DIAGRAMS[] = {
     {"02_edge_functions.png", E02_WIDTH, E02_HEIGHT, draw_edge_functions},
     {"03_depth_along_a_row.png", E03_WIDTH, E03_HEIGHT, draw_depth_along_a_row},
     {"04_edge_walk.png", E04_WIDTH, E04_HEIGHT, draw_edge_walk},
+    {"05_clipping_cases.png", E05_WIDTH, E05_HEIGHT, draw_clipping_cases},
     {"06_depth_curve.png", E06_WIDTH, E06_HEIGHT, draw_depth_curve},
 };
 
@@ -809,7 +929,8 @@ int main(int argc, char **argv)
     if (argc == 2 && strcmp(argv[1], "--help") == 0) {
         printf("usage: " PROGRAM " DIR\n"
                "Writes the lessons' diagrams into DIR: 02_edge_functions.png,\n"
-               "03_depth_along_a_row.png, 04_edge_walk.png and 06_depth_curve.png.\n");
+               "03_depth_along_a_row.png, 04_edge_walk.png, 05_clipping_cases.png and\n"
+               "06_depth_curve.png.\n");
         return EXIT_OK;
     }
     if (argc != 2 || argv[1][0] == '\0' || argv[1][0] == '-') {

@@ -94,6 +94,7 @@ static void diagrams_are_written_at_their_documented_sizes(void **state)
         {"02_edge_functions.png", 900, 500},
         {"03_depth_along_a_row.png", 820, 520},
         {"04_edge_walk.png", 820, 600},
+        {"05_clipping_cases.png", 920, 420},
         {"06_depth_curve.png", 900, 580},
     };
     for (size_t i = 0; i < sizeof expected / sizeof expected[0]; i++) {
