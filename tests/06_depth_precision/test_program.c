@@ -177,6 +177,20 @@ static void far_inf_with_reversed_float32(void **state)
     free(text);
 }
 
+/* --far 200: the band at d = 300 lies beyond the far plane. It drew no
+ * pixel, so it has no share of back-plate pixels, not a share of 0. */
+static void a_band_beyond_the_far_plane_is_not_drawn_and_says_so(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("l06_far_200");
+    Path out = in_dir(dir, "x.png");
+    const char *args[] = {"--width", "200", "--height", "150", "--out", out.path, "--far", "200",
+                          NULL};
+    char *text = run_ok(PROGRAM, args);
+    expect_line(text, "d = 100: 0.000, d = 300: not drawn\n");
+    free(text);
+}
+
 static void bad_command_lines_are_refused_with_status_2(void **state)
 {
     (void)state;
@@ -216,6 +230,7 @@ int main(void)
         cmocka_unit_test(precision_plot_is_written),
         cmocka_unit_test(precision_plot_of_a_tiny_near_plane_ends),
         cmocka_unit_test(far_inf_with_reversed_float32),
+        cmocka_unit_test(a_band_beyond_the_far_plane_is_not_drawn_and_says_so),
         cmocka_unit_test(bad_command_lines_are_refused_with_status_2),
     };
     return cmocka_run_group_tests_name("06_depth_precision program", tests, NULL, NULL);

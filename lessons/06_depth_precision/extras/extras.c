@@ -28,17 +28,24 @@ DepthSetup depth_chosen(const Run *run)
     return depth_flags_setup(run, run->opt.extra[FLAG_FORMAT], run->opt.extra[FLAG_MAPPING]);
 }
 
-/* On the ladder: the fraction of each band's pixels where the back plate won. */
+/* On the ladder: the fraction of each band's pixels where the back plate
+ * won; "not drawn" for a band with no pixel (beyond the far plane, or off
+ * the screen), not a fraction of nothing. */
 static void note_ladder_bands(Run *run)
 {
     LadderScore s;
     Target *t = &run->target;
     ladder_score_faces(t->face, (size_t)t->width * (size_t)t->height, &s);
-    char line[256];
+    char line[320], share[16];
     int used = snprintf(line, sizeof line, "  back plate wins (gap %g):", LADDER_GAP);
-    for (int k = 0; k < LADDER_BANDS && used > 0 && (size_t)used < sizeof line; k++)
-        used += snprintf(line + used, sizeof line - (size_t)used, "%s d = %g: %.3f",
-                         k ? "," : "", LADDER_DISTANCE[k], ladder_wrong_fraction(&s, k));
+    for (int k = 0; k < LADDER_BANDS && used > 0 && (size_t)used < sizeof line; k++) {
+        if (s.back[k] + s.front[k] > 0)
+            snprintf(share, sizeof share, "%.3f", ladder_wrong_fraction(&s, k));
+        else
+            snprintf(share, sizeof share, "not drawn");
+        used += snprintf(line + used, sizeof line - (size_t)used, "%s d = %g: %s",
+                         k ? "," : "", LADDER_DISTANCE[k], share);
+    }
     run_note(run, "%s", line);
 }
 
