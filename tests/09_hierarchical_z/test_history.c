@@ -19,15 +19,18 @@
 #include "expect.h"
 #include "hierarchical_z.h"
 #include "state.h"
+#include "harness/image_io.h"
 #include "harness/render.h"
 #include "harness/scene.h"
+#include "test_support.h"
 
 #define W 160
 #define H 120
 
-typedef struct { uint64_t *hash; int n, cap; } History;
+typedef struct { uint64_t *hash; int n, cap, stop; } History; /* stop: after that face */
 
-/* After each face: one hash of both buffers (FNV-1a over their bytes). */
+/* After each face: one hash of both buffers (FNV-1a over their bytes);
+ * false (the drawing stops) once face h->stop is drawn, when h->stop >= 0. */
 static bool remember(void *data, const Target *t, const ScreenFace *f, Error *err)
 {
     (void)f, (void)err;
@@ -42,12 +45,17 @@ static bool remember(void *data, const Target *t, const ScreenFace *f, Error *er
         assert_non_null(h->hash);
     }
     h->hash[h->n++] = x;
-    return true;
+    return h->stop < 0 || h->n <= h->stop;
 }
 
-/* scene drawn at W x H, tiles of side tile or none (tile 0): its history,
- * and the fragments tested at each pixel. */
-static History draw(const char *scene, int tile, uint32_t *tests, DepthMapping mapping)
+/* The buffers where a drawing stopped (History.stop). */
+static float stopped_depth[W * H];
+static int32_t stopped_face[W * H];
+
+/* scene drawn at W x H, tiles of side tile or none (tile 0), up to face stop
+ * (or every face: -1): its history, the fragments tested at each pixel, and
+ * the buffers in stopped_depth and stopped_face. */
+static History draw(const char *scene, int tile, uint32_t *tests, DepthMapping mapping, int stop)
 {
     const SceneInfo *info = scene_find(scene);
     assert_non_null(info);
@@ -71,28 +79,71 @@ static History draw(const char *scene, int tile, uint32_t *tests, DepthMapping m
     Rasterizer rz = HIERARCHICAL_ZBUFFER;
     rz.state = &s;
     rz.clear(&t, &s);
-    History h = {0};
-    assert_true(render_faces(&r, &t, &rz, NULL, 0, remember, &h, &err));
+    History h = {.stop = stop};
+    bool all = render_faces(&r, &t, &rz, NULL, 0, remember, &h, &err);
+    assert_true(all || stop >= 0);
     memcpy(tests, t.overdraw, (size_t)W * H * sizeof *tests);
+    memcpy(stopped_depth, t.depth, sizeof stopped_depth);
+    memcpy(stopped_face, t.face, sizeof stopped_face);
     hiz_free(&hz);
     target_free(&t);
     render_free(&r);
     return h;
 }
 
+/* After face k the buffers with tiles and without differ: the first pixel
+ * that does, its tile, the faces there, and a picture of them all (magenta
+ * where they differ, grey where they agree) for the student to open. */
+static void report_difference(const char *scene, int tile, int k, DepthMapping mapping)
+{
+    static uint32_t tests[W * H];
+    static float depth[W * H];
+    static int32_t face[W * H];
+    History a = draw(scene, tile, tests, mapping, k);
+    memcpy(depth, stopped_depth, sizeof depth), memcpy(face, stopped_face, sizeof face);
+    History b = draw(scene, 0, tests, mapping, k);
+    free(a.hash), free(b.hash);
+    Image im;
+    Error err;
+    assert_true(image_init(&im, W, H, &err));
+    long differ = 0;
+    int first = -1;
+    for (int i = 0; i < W * H; i++) {
+        bool same = face[i] == stopped_face[i] &&
+                    memcmp(&depth[i], &stopped_depth[i], sizeof depth[i]) == 0;
+        image_set(&im, i % W, i / W, same ? (Rgb){70, 70, 70} : (Rgb){255, 0, 255});
+        if (!same && first < 0)
+            first = i;
+        differ += !same;
+    }
+    char name[64];
+    snprintf(name, sizeof name, "l09_history_%s_%d", scene, tile);
+    const char *path = path_join(test_dir(name), "differ.png");
+    assert_true(image_write_png(&im, path, &err));
+    image_free(&im);
+    int x = first % W, y = first / W;
+    fail_msg("%s, tiles of %d: after face %d, %ld pixels differ from the drawing without "
+             "tiles; the first is (%d,%d), in tile (%d,%d): face %d there with tiles, %d "
+             "without (NO_FACE = -1). A tile that was skipped held a pixel the face wins, "
+             "or a tile's bound was set too near. Magenta in %s", scene, tile, k, differ, x, y,
+             x / tile, y / tile, face[first], stopped_face[first], path);
+}
+
 static void same_history_with_and_without_tiles(const char *scene, int tile,
                                                 DepthMapping mapping)
 {
     static uint32_t with[W * H], without[W * H];
-    History a = draw(scene, tile, with, mapping), b = draw(scene, 0, without, mapping);
+    History a = draw(scene, tile, with, mapping, -1), b = draw(scene, 0, without, mapping, -1);
     expect_count(b.n, a.n, "faces drawn");
     for (int k = 0; k < a.n; k++)
         if (a.hash[k] != b.hash[k])
-            fail_msg("%s, tiles of %d: the buffers differ after face %d", scene, tile, k);
+            report_difference(scene, tile, k, mapping);
     long fewer = 0;
     for (int i = 0; i < W * H; i++) {
         if (with[i] > without[i])
-            fail_msg("%s: pixel %d tested more often with tiles", scene, i);
+            fail_msg("%s: pixel (%d,%d), in tile (%d,%d), tested %u times with tiles, %u "
+                     "without", scene, i % W, i / W, i % W / tile, i / W / tile, with[i],
+                     without[i]);
         fewer += without[i] - with[i];
     }
     printf("  %s, tiles of %d: %ld fragments never tested\n", scene, tile, fewer);
