@@ -21,6 +21,8 @@
  *                            near 1, far 100, in the standard and the reversed
  *                            mapping (docs/conventions.md), and a zoom on d from
  *                            90 to 92 with the unorm16 codes stored there
+ *   08_z_modes.png           940 x 590  the stages of a fragment in each --z-mode
+ *                            of lesson 08: late, early, the pre-pass's two passes
  * Exit status: 0 written, 1 could not write, 2 bad usage.
  *
  * Coverage is decided by the lessons' rule, exactly: corners snapped to 1/256
@@ -908,6 +910,87 @@ static void draw_depth_curve(Image *im)
     }
 }
 
+/* ---- 08: where the depth test runs, in each --z-mode -------------------------- */
+
+#define E08_WIDTH 940
+#define E08_HEIGHT 590
+#define E08_BOX_W 150
+#define E08_BOX_H 40
+
+static const Rgb STAGE_CELL = {48, 56, 78};
+static const Rgb TEST_CELL = {92, 62, 40};
+static const Rgb SHADE_CELL = {38, 90, 64};
+static const Rgb FAIL_COLOUR = {255, 110, 110};
+
+/* A stage: a box at (x, y) of colour cell, its name centred. */
+static void stage(Image *im, int x, int y, const char *name, Rgb cell)
+{
+    fill_rect(im, x, y, x + E08_BOX_W, y + E08_BOX_H, cell);
+    text_at(im, x + (E08_BOX_W - scaled_width(name, TEXT_SCALE)) / 2,
+            y + (E08_BOX_H - scaled_height(TEXT_SCALE)) / 2, name, TEXT_SCALE, TEXT);
+}
+
+/* An arrow from the right side of one box to the left side of the next. */
+static void arrow_right(Image *im, int x0, int x1, int y)
+{
+    line(im, x0, y, x1 - 8, y, 1.2, 0, AXIS_COLOUR);
+    arrowhead(im, x1, y, 1, 0, 9, AXIS_COLOUR);
+}
+
+/* Stages in a row from (x, y), 40 pixels apart; the first box of kind test,
+ * shade or neither is coloured as such. */
+static void stages(Image *im, int x, int y, const char *const *names, const Rgb *cells, int n)
+{
+    for (int k = 0; k < n; k++) {
+        int bx = x + k * (E08_BOX_W + 40);
+        stage(im, bx, y, names[k], cells[k]);
+        if (k > 0)
+            arrow_right(im, bx - 40, bx, y + E08_BOX_H / 2);
+    }
+}
+
+/* Where a failed depth test ends a fragment: an arrow down to a note. */
+static void fails_here(Image *im, int x, int y, const char *note)
+{
+    int cx = x + E08_BOX_W / 2;
+    line(im, cx, y + E08_BOX_H, cx, y + E08_BOX_H + 22, 1.2, 0, FAIL_COLOUR);
+    arrowhead(im, cx, y + E08_BOX_H + 30, 0, 1, 9, FAIL_COLOUR);
+    text_at(im, cx - 60, y + E08_BOX_H + 36, note, TEXT_SCALE, FAIL_COLOUR);
+}
+
+static void draw_z_modes(Image *im)
+{
+    image_fill(im, BACKGROUND);
+    text_at(im, 20, 14, "Where the depth test runs, for each fragment (--z-mode)", TEXT_SCALE, TEXT);
+    int step = E08_BOX_W + 40, x = 160;
+    const Rgb plain = STAGE_CELL, test = TEST_CELL, shade = SHADE_CELL;
+
+    text_at(im, 20, 72, "late", TEXT_SCALE, TEXT);
+    const char *late[] = {"rasterize", "shade", "depth test", "write"};
+    stages(im, x, 60, late, (const Rgb[]){plain, shade, test, plain}, 4);
+    fails_here(im, x + 2 * step, 60, "failed: shaded for nothing");
+
+    text_at(im, 20, 212, "early", TEXT_SCALE, TEXT);
+    const char *early[] = {"rasterize", "depth test", "shade", "write"};
+    stages(im, x, 200, early, (const Rgb[]){plain, test, shade, plain}, 4);
+    fails_here(im, x + step, 200, "failed: never shaded");
+    text_at(im, x + 2 * step, 250, "a cutout: as late", TEXT_SCALE, DIM_TEXT);
+
+    text_at(im, 20, 352, "prepass", TEXT_SCALE, TEXT);
+    text_at(im, 20, 374, "pass 1", TEXT_SCALE, DIM_TEXT);
+    const char *pass1[] = {"rasterize", "depth test", "write depth"};
+    stages(im, x, 340, pass1, (const Rgb[]){plain, test, plain}, 3);
+    text_at(im, 20, 446, "pass 2", TEXT_SCALE, DIM_TEXT);
+    const char *pass2[] = {"rasterize", "equal test", "shade", "write"};
+    stages(im, x, 430, pass2, (const Rgb[]){plain, test, shade, plain}, 4);
+    fails_here(im, x + step, 430, "not the nearest: never shaded");
+
+    fill_rect(im, 20, 558, 40, 572, TEST_CELL);
+    text_at(im, 48, 558, "depth test", TEXT_SCALE, TEXT);
+    fill_rect(im, 210, 558, 230, 572, SHADE_CELL);
+    text_at(im, 238, 558, "the shader (a cutout discards there)", TEXT_SCALE, TEXT);
+}
+
 /* ---- Writing them ---------------------------------------------------------------- */
 
 typedef struct {
@@ -922,6 +1005,7 @@ static const Diagram DIAGRAMS[] = {
     {"04_edge_walk.png", E04_WIDTH, E04_HEIGHT, draw_edge_walk},
     {"05_clipping_cases.png", E05_WIDTH, E05_HEIGHT, draw_clipping_cases},
     {"06_depth_curve.png", E06_WIDTH, E06_HEIGHT, draw_depth_curve},
+    {"08_z_modes.png", E08_WIDTH, E08_HEIGHT, draw_z_modes},
 };
 
 int main(int argc, char **argv)
@@ -929,8 +1013,8 @@ int main(int argc, char **argv)
     if (argc == 2 && strcmp(argv[1], "--help") == 0) {
         printf("usage: " PROGRAM " DIR\n"
                "Writes the lessons' diagrams into DIR: 02_edge_functions.png,\n"
-               "03_depth_along_a_row.png, 04_edge_walk.png, 05_clipping_cases.png and\n"
-               "06_depth_curve.png.\n");
+               "03_depth_along_a_row.png, 04_edge_walk.png, 05_clipping_cases.png,\n"
+               "06_depth_curve.png and 08_z_modes.png.\n");
         return EXIT_OK;
     }
     if (argc != 2 || argv[1][0] == '\0' || argv[1][0] == '-') {
