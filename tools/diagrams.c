@@ -23,6 +23,9 @@
  *                            90 to 92 with the unorm16 codes stored there
  *   08_z_modes.png           940 x 590  the stages of a fragment in each --z-mode
  *                            of lesson 08: late, early, the pre-pass's two passes
+ *   10_bins_blocks.png       940 x 600  a triangle over 2 x 2 tiles of 64 pixels:
+ *                            its blocks of 8 x 8 inside every edge or crossed by
+ *                            one, and one block's mask, a row of it one register
  * Exit status: 0 written, 1 could not write, 2 bad usage.
  *
  * Coverage is decided by the lessons' rule, exactly: corners snapped to 1/256
@@ -37,6 +40,7 @@
 #include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "error.h"
@@ -991,6 +995,121 @@ static void draw_z_modes(Image *im)
     text_at(im, 238, 558, "the shader (a cutout discards there)", TEXT_SCALE, TEXT);
 }
 
+/* ---- 10: bins, blocks and a block's rows ------------------------------------- */
+
+#define E10_WIDTH 940
+#define E10_HEIGHT 600
+#define E10_PIXELS 128 /* 2 x 2 tiles of 64 x 64 pixels, 8 x 8 blocks of 8 x 8 */
+#define E10_SCALE 3    /* picture pixels per screen pixel */
+#define E10_LEFT 40
+#define E10_TOP 90
+#define E10_ZOOM_LEFT 560
+#define E10_ZOOM_CELL 40
+
+static const Rgb CROSSED_CELL = {120, 84, 40};
+static const Rgb WHOLE_CELL = {50, 90, 140};
+static const Rgb TILE_LINE = {235, 235, 245};
+static const Rgb LANE_COLOUR = {255, 235, 60};
+
+/* A triangle on the 128 x 128 screen, and whether pixel (x, y)'s centre is
+ * in it (no centre lies on one of its edges: no fill rule is needed). */
+static const Point E10_TRIANGLE[3] = {{10.3, 20.6}, {121.7, 44.2}, {38.4, 119.1}};
+static bool e10_inside(int x, int y)
+{
+    double px = x + 0.5, py = y + 0.5;
+    int sign = 0;
+    for (int k = 0; k < 3; k++) {
+        Point a = E10_TRIANGLE[k], b = E10_TRIANGLE[(k + 1) % 3];
+        double e = (b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x);
+        int s = (e > 0) - (e < 0);
+        if (s != 0 && sign != 0 && s != sign)
+            return false;
+        sign = s ? s : sign;
+    }
+    return true;
+}
+
+/* How many of block (bx, by)'s 64 pixel centres lie in the triangle. */
+static int block_pixels_in(int bx, int by)
+{
+    int in = 0;
+    for (int y = 0; y < 8; y++)
+        for (int x = 0; x < 8; x++)
+            in += e10_inside(bx * 8 + x, by * 8 + y);
+    return in;
+}
+
+static void draw_bins_and_blocks(Image *im)
+{
+    image_fill(im, BACKGROUND);
+    text_at(im, 20, 14, "One triangle in lesson 10: tiles, blocks, and a block's rows", TEXT_SCALE,
+            TEXT);
+    int side = E10_PIXELS * E10_SCALE, block = 8 * E10_SCALE, zx = 0, zy = 0, half = 64;
+    for (int by = 0; by < E10_PIXELS / 8; by++)
+        for (int bx = 0; bx < E10_PIXELS / 8; bx++) {
+            int in = block_pixels_in(bx, by);
+            int x0 = E10_LEFT + bx * block, y0 = E10_TOP + by * block;
+            if (in > 0)
+                fill_rect(im, x0, y0, x0 + block - 1, y0 + block - 1,
+                          in == 64 ? WHOLE_CELL : CROSSED_CELL);
+            if (in > 0 && in < 64 && abs(in - 32) < half)
+                zx = bx, zy = by, half = abs(in - 32); /* the zoom: the block most nearly half in */
+        }
+    for (int k = 0; k <= E10_PIXELS / 8; k++) { /* block lines, then tile lines */
+        line(im, E10_LEFT + k * block, E10_TOP, E10_LEFT + k * block, E10_TOP + side, 0.4, 0,
+             GRID_LINE);
+        line(im, E10_LEFT, E10_TOP + k * block, E10_LEFT + side, E10_TOP + k * block, 0.4, 0,
+             GRID_LINE);
+    }
+    for (int k = 0; k <= 2; k++) {
+        line(im, E10_LEFT + k * side / 2, E10_TOP, E10_LEFT + k * side / 2, E10_TOP + side, 1.5, 0,
+             TILE_LINE);
+        line(im, E10_LEFT, E10_TOP + k * side / 2, E10_LEFT + side, E10_TOP + k * side / 2, 1.5, 0,
+             TILE_LINE);
+    }
+    for (int k = 0; k < 3; k++) {
+        Point a = E10_TRIANGLE[k], b = E10_TRIANGLE[(k + 1) % 3];
+        line(im, E10_LEFT + a.x * E10_SCALE, E10_TOP + a.y * E10_SCALE, E10_LEFT + b.x * E10_SCALE,
+             E10_TOP + b.y * E10_SCALE, 1.2, 0, A_DOT);
+    }
+    int qx = E10_LEFT + zx * block, qy = E10_TOP + zy * block;
+    line(im, qx, qy, qx + block, qy, 1.5, 0, LANE_COLOUR);
+    line(im, qx, qy + block, qx + block, qy + block, 1.5, 0, LANE_COLOUR);
+    line(im, qx, qy, qx, qy + block, 1.5, 0, LANE_COLOUR);
+    line(im, qx + block, qy, qx + block, qy + block, 1.5, 0, LANE_COLOUR);
+    line(im, qx + block, qy + block / 2, E10_ZOOM_LEFT - 10, E10_TOP + 4 * E10_ZOOM_CELL, 0.8, 4,
+         LANE_COLOUR);
+
+    /* The block, pixel by pixel: its mask, and row 3 as one register of 8 lanes. */
+    for (int y = 0; y < 8; y++)
+        for (int x = 0; x < 8; x++) {
+            int x0 = E10_ZOOM_LEFT + x * E10_ZOOM_CELL, y0 = E10_TOP + y * E10_ZOOM_CELL;
+            bool in = e10_inside(zx * 8 + x, zy * 8 + y);
+            fill_rect(im, x0 + 1, y0 + 1, x0 + E10_ZOOM_CELL - 1, y0 + E10_ZOOM_CELL - 1,
+                      in ? WHOLE_CELL : STAGE_CELL);
+            char bit[4];
+            snprintf(bit, sizeof bit, "%d", in);
+            text_at(im, x0 + 15, y0 + 13, bit, TEXT_SCALE, in ? TEXT : DIM_TEXT);
+        }
+    int ry = E10_TOP + 3 * E10_ZOOM_CELL;
+    line(im, E10_ZOOM_LEFT, ry, E10_ZOOM_LEFT + 8 * E10_ZOOM_CELL, ry, 1.5, 0, LANE_COLOUR);
+    line(im, E10_ZOOM_LEFT, ry + E10_ZOOM_CELL, E10_ZOOM_LEFT + 8 * E10_ZOOM_CELL,
+         ry + E10_ZOOM_CELL, 1.5, 0, LANE_COLOUR);
+    text_at(im, E10_ZOOM_LEFT, E10_TOP - 26, "the yellow block: its mask", TEXT_SCALE, LANE_COLOUR);
+    text_at(im, E10_ZOOM_LEFT, E10_TOP + 8 * E10_ZOOM_CELL + 12, "row 3: 8 lanes, one AVX2", TEXT_SCALE,
+            LANE_COLOUR);
+    text_at(im, E10_ZOOM_LEFT, E10_TOP + 8 * E10_ZOOM_CELL + 34, "register; bit 8 j + i", TEXT_SCALE,
+            LANE_COLOUR);
+
+    int ly = E10_TOP + side + 20;
+    line(im, 40, ly + 7, 76, ly + 7, 1.5, 0, TILE_LINE);
+    text_at(im, 84, ly, "tiles, 64 x 64: the triangle goes in all four bins", TEXT_SCALE, TEXT);
+    fill_rect(im, 40, ly + 26, 76, ly + 40, WHOLE_CELL);
+    text_at(im, 84, ly + 26, "blocks inside every edge: all 64 pixels at once", TEXT_SCALE, TEXT);
+    fill_rect(im, 40, ly + 52, 76, ly + 66, CROSSED_CELL);
+    text_at(im, 84, ly + 52, "blocks an edge crosses: that edge per pixel", TEXT_SCALE, TEXT);
+}
+
 /* ---- Writing them ---------------------------------------------------------------- */
 
 typedef struct {
@@ -1006,6 +1125,7 @@ static const Diagram DIAGRAMS[] = {
     {"05_clipping_cases.png", E05_WIDTH, E05_HEIGHT, draw_clipping_cases},
     {"06_depth_curve.png", E06_WIDTH, E06_HEIGHT, draw_depth_curve},
     {"08_z_modes.png", E08_WIDTH, E08_HEIGHT, draw_z_modes},
+    {"10_bins_blocks.png", E10_WIDTH, E10_HEIGHT, draw_bins_and_blocks},
 };
 
 int main(int argc, char **argv)
@@ -1014,7 +1134,7 @@ int main(int argc, char **argv)
         printf("usage: " PROGRAM " DIR\n"
                "Writes the lessons' diagrams into DIR: 02_edge_functions.png,\n"
                "03_depth_along_a_row.png, 04_edge_walk.png, 05_clipping_cases.png,\n"
-               "06_depth_curve.png and 08_z_modes.png.\n");
+               "06_depth_curve.png, 08_z_modes.png and 10_bins_blocks.png.\n");
         return EXIT_OK;
     }
     if (argc != 2 || argv[1][0] == '\0' || argv[1][0] == '-') {
