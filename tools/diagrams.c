@@ -23,6 +23,9 @@
  *                            90 to 92 with the unorm16 codes stored there
  *   08_z_modes.png           940 x 590  the stages of a fragment in each --z-mode
  *                            of lesson 08: late, early, the pre-pass's two passes
+ *   09_tile_bound.png        940 x 560  one row over two tiles of 8 pixels: the
+ *                            buffer, each tile's farthest value, and a
+ *                            triangle's plane whose nearest value skips one tile
  *   10_bins_blocks.png       940 x 600  a triangle over 2 x 2 tiles of 64 pixels:
  *                            its blocks of 8 x 8 inside every edge or crossed by
  *                            one, and one block's mask, a row of it one register
@@ -72,6 +75,8 @@ static const Rgb SPAN_CELL = {120, 100, 30};
 static const Rgb SPAN_DOT = {255, 235, 60};        /* a centre in the span (read by the test) */
 static const Rgb LEFT_COLOUR = {110, 230, 120};
 static const Rgb RIGHT_COLOUR = {255, 110, 200};
+static const Rgb TILE_LINE = {235, 235, 245};
+static const Rgb LANE_COLOUR = {255, 235, 60}; /* a tile's farthest (09), a block's row (10) */
 
 /* ---- Drawing ------------------------------------------------------------------ */
 
@@ -995,6 +1000,78 @@ static void draw_z_modes(Image *im)
     text_at(im, 238, 558, "the shader (a cutout discards there)", TEXT_SCALE, TEXT);
 }
 
+/* ---- 09: a tile's farthest depth against a triangle's nearest ----------------- */
+
+#define E09_WIDTH 940
+#define E09_HEIGHT 560
+#define E09_LEFT 110
+#define E09_CELL 44   /* picture pixels per screen pixel across */
+#define E09_TOP 110   /* z_w = 1 (the far plane) */
+#define E09_BOTTOM 430 /* z_w = 0 (near) */
+
+/* Two tiles of 8 pixels along one row: what the buffer holds at each pixel
+ * (z_w, farther up), and the triangle's plane over them, z = a + g x. */
+static const double E09_STORED[16] = {0.30, 0.28, 0.27, 0.29, 0.31, 0.30, 0.28, 0.27,
+                                      0.35, 0.38, 1.00, 0.62, 0.40, 0.66, 0.70, 0.45};
+#define E09_PLANE_A 0.62
+#define E09_PLANE_G (-0.012)
+
+static double e09_y(double z) { return E09_BOTTOM - z * (E09_BOTTOM - E09_TOP); }
+static double e09_plane(double x) { return E09_PLANE_A + E09_PLANE_G * x; }
+
+static void draw_tile_bound(Image *im)
+{
+    image_fill(im, BACKGROUND);
+    text_at(im, 20, 14, "Two tiles of 8 pixels along a row: skip a tile when no fragment can pass",
+            TEXT_SCALE, TEXT);
+    line(im, 20, 51, 56, 51, 1.6, 0, A_DOT);
+    text_at(im, 64, 44, "the triangle's plane; its nearest over a tile", TEXT_SCALE, A_DOT);
+    fill_rect(im, 20, 68, 56, 80, GRID_LINE);
+    text_at(im, 64, 68, "stored z_w", TEXT_SCALE, DIM_TEXT);
+    line(im, 250, 75, 286, 75, 1.6, 6, LANE_COLOUR);
+    text_at(im, 294, 68, "the tile's farthest (far[k])", TEXT_SCALE, LANE_COLOUR);
+    disc(im, 684, 75, 5, LEFT_COLOUR);
+    text_at(im, 696, 68, "fragment passes", TEXT_SCALE, LEFT_COLOUR);
+
+    for (int x = 0; x < 16; x++) { /* the buffer, pixel by pixel */
+        double z = E09_STORED[x];
+        fill_rect(im, E09_LEFT + x * E09_CELL + 3, (int)e09_y(z), E09_LEFT + (x + 1) * E09_CELL - 3,
+                  E09_BOTTOM, z >= 1 ? STAGE_CELL : GRID_LINE);
+    }
+    line(im, E09_LEFT, E09_BOTTOM, E09_LEFT + 16 * E09_CELL, E09_BOTTOM, 0.5, 0, AXIS_COLOUR);
+    line(im, E09_LEFT, E09_TOP, E09_LEFT, E09_BOTTOM, 0.5, 0, AXIS_COLOUR);
+    text_at(im, 24, E09_TOP - 7, "far 1", TEXT_SCALE, AXIS_COLOUR);
+    text_at(im, 24, E09_BOTTOM - 7, "near 0", TEXT_SCALE, AXIS_COLOUR);
+    text_at(im, 20, (E09_TOP + E09_BOTTOM) / 2 - 7, "z_w", TEXT_SCALE, AXIS_COLOUR);
+    for (int k = 0; k < 2; k++) {
+        int x0 = E09_LEFT + k * 8 * E09_CELL, x1 = x0 + 8 * E09_CELL;
+        double far = 0;
+        for (int x = 0; x < 8; x++)
+            far = fmax(far, E09_STORED[k * 8 + x]);
+        double nearest = fmin(e09_plane(k * 8 + 0.5), e09_plane(k * 8 + 7.5));
+        line(im, x0, e09_y(far), x1, e09_y(far), 1.6, 6, LANE_COLOUR);
+        line(im, x0 + 0.5 * E09_CELL, e09_y(e09_plane(k * 8 + 0.5)), x0 + 7.5 * E09_CELL,
+             e09_y(e09_plane(k * 8 + 7.5)), 1.6, 0, A_DOT);
+        double nx = e09_plane(k * 8 + 0.5) <= e09_plane(k * 8 + 7.5) ? k * 8 + 0.5 : k * 8 + 7.5;
+        disc(im, E09_LEFT + nx * E09_CELL, e09_y(nearest), 6, A_DOT);
+        bool skip = nearest > far; /* the standard mapping: larger is farther */
+        for (int x = 0; x < 8 && !skip; x++) {
+            double px = k * 8 + x + 0.5;
+            if (e09_plane(px) < E09_STORED[k * 8 + x])
+                disc(im, E09_LEFT + px * E09_CELL, e09_y(e09_plane(px)), 5, LEFT_COLOUR);
+        }
+        line(im, x1, E09_TOP - 10, x1, E09_BOTTOM + 10, 0.8, 0, TILE_LINE);
+        text_at(im, x0 + 12, E09_BOTTOM + 18, k == 0 ? "tile 1: nearest > farthest" :
+                                                       "tile 2: nearest < farthest",
+                TEXT_SCALE, TEXT);
+        text_at(im, x0 + 12, E09_BOTTOM + 42, k == 0 ? "skipped, nothing tested" :
+                                                       "tested pixel by pixel",
+                TEXT_SCALE, k == 0 ? A_DOT : LEFT_COLOUR);
+    }
+    text_at(im, E09_LEFT + 8 * E09_CELL + 12, E09_TOP + 20, "a pixel still cleared: 1",
+            TEXT_SCALE, DIM_TEXT);
+}
+
 /* ---- 10: bins, blocks and a block's rows ------------------------------------- */
 
 #define E10_WIDTH 940
@@ -1008,8 +1085,6 @@ static void draw_z_modes(Image *im)
 
 static const Rgb CROSSED_CELL = {120, 84, 40};
 static const Rgb WHOLE_CELL = {50, 90, 140};
-static const Rgb TILE_LINE = {235, 235, 245};
-static const Rgb LANE_COLOUR = {255, 235, 60};
 
 /* A triangle on the 128 x 128 screen, and whether pixel (x, y)'s centre is
  * in it (no centre lies on one of its edges: no fill rule is needed). */
@@ -1125,6 +1200,7 @@ static const Diagram DIAGRAMS[] = {
     {"05_clipping_cases.png", E05_WIDTH, E05_HEIGHT, draw_clipping_cases},
     {"06_depth_curve.png", E06_WIDTH, E06_HEIGHT, draw_depth_curve},
     {"08_z_modes.png", E08_WIDTH, E08_HEIGHT, draw_z_modes},
+    {"09_tile_bound.png", E09_WIDTH, E09_HEIGHT, draw_tile_bound},
     {"10_bins_blocks.png", E10_WIDTH, E10_HEIGHT, draw_bins_and_blocks},
 };
 
@@ -1134,7 +1210,8 @@ int main(int argc, char **argv)
         printf("usage: " PROGRAM " DIR\n"
                "Writes the lessons' diagrams into DIR: 02_edge_functions.png,\n"
                "03_depth_along_a_row.png, 04_edge_walk.png, 05_clipping_cases.png,\n"
-               "06_depth_curve.png, 08_z_modes.png and 10_bins_blocks.png.\n");
+               "06_depth_curve.png, 08_z_modes.png, 09_tile_bound.png and\n"
+               "10_bins_blocks.png.\n");
         return EXIT_OK;
     }
     if (argc != 2 || argv[1][0] == '\0' || argv[1][0] == '-') {

@@ -97,6 +97,7 @@ static void diagrams_are_written_at_their_documented_sizes(void **state)
         {"05_clipping_cases.png", 920, 420},
         {"06_depth_curve.png", 900, 580},
         {"08_z_modes.png", 940, 590},
+        {"09_tile_bound.png", 940, 560},
         {"10_bins_blocks.png", 940, 600},
     };
     for (size_t i = 0; i < sizeof expected / sizeof expected[0]; i++) {
