@@ -21,6 +21,9 @@
  *                            near 1, far 100, in the standard and the reversed
  *                            mapping (docs/conventions.md), and a zoom on d from
  *                            90 to 92 with the unorm16 codes stored there
+ *   07_bias.png              940 x 520  a decal's fragments against its wall along a
+ *                            row, facing the camera and grazing, with units only
+ *                            and with factor and units: which win
  *   08_z_modes.png           940 x 590  the stages of a fragment in each --z-mode
  *                            of lesson 08: late, early, the pre-pass's two passes
  *   09_tile_bound.png        940 x 560  one row over two tiles of 8 pixels: the
@@ -919,6 +922,72 @@ static void draw_depth_curve(Image *im)
     }
 }
 
+/* ---- 07: what a slope-scaled bias does on a grazing face ---------------------- */
+
+#define E07_WIDTH 940
+#define E07_HEIGHT 520
+#define E07_PANEL_LEFT 40
+#define E07_PANEL_STEP 300
+#define E07_PANEL_WIDTH 270
+#define E07_TOP 120
+#define E07_BOTTOM 400
+#define E07_R 1.0 /* one step of the format: the units' size, in the picture's depth units */
+
+static const Rgb WALL_COLOUR = {170, 174, 186};
+static const Rgb DECAL_COLOUR = {255, 150, 50};
+
+/* The decal's z_w at pixel k of a face whose depth changes by m per pixel:
+ * the wall's, off by up to half a pixel's change (its plane set up from
+ * rounded numbers, as lesson 07's page explains), in depth units. */
+static double decal_error(int k, double m)
+{
+    static const double E[8] = {0.42, -0.31, 0.18, -0.47, 0.35, -0.12, 0.49, -0.38};
+    return E[k] * m + (k % 2 ? -0.4 : 0.4) * E07_R;
+}
+
+/* One panel: the wall's line, the decal's fragments moved by o toward the
+ * camera (down), filled where they win (nearer than the wall), hollow where
+ * they lose. */
+static void bias_panel(Image *im, int panel, double m, double o, const char *title,
+                       const char *how)
+{
+    int left = E07_PANEL_LEFT + E07_PANEL_STEP * panel;
+    double scale = (E07_BOTTOM - E07_TOP) / 34.0; /* depth units to picture pixels */
+    double mid = (E07_TOP + E07_BOTTOM) / 2.0 - 20;
+    double x0 = left + 15, dx = (E07_PANEL_WIDTH - 30) / 7.0;
+    double wall0 = mid - 3.5 * m * scale; /* the wall's z_w at pixel 0, farther up */
+    line(im, x0, wall0, x0 + 7 * dx, wall0 + 7 * m * scale, 1.4, 0, WALL_COLOUR);
+    for (int k = 0; k < 8; k++) {
+        double wall = wall0 + k * m * scale;
+        double y = wall + (o - decal_error(k, m)) * scale; /* o pulls it nearer: down */
+        bool wins = y > wall + 0.5;
+        if (wins)
+            disc(im, x0 + k * dx, y, 6, DECAL_COLOUR);
+        else
+            ring(im, x0 + k * dx, y, 4, 6, DECAL_COLOUR);
+    }
+    text_at(im, left, E07_BOTTOM + 16, title, TEXT_SCALE, TEXT);
+    text_at(im, left, E07_BOTTOM + 40, how, TEXT_SCALE, DECAL_COLOUR);
+}
+
+static void draw_bias(Image *im)
+{
+    image_fill(im, BACKGROUND);
+    text_at(im, 20, 14, "A decal on a wall, 8 pixels along a row (z_w: farther up)", TEXT_SCALE,
+            TEXT);
+    line(im, 20, 51, 56, 51, 1.4, 0, WALL_COLOUR);
+    text_at(im, 64, 44, "the wall", TEXT_SCALE, WALL_COLOUR);
+    disc(im, 200, 51, 6, DECAL_COLOUR);
+    text_at(im, 214, 44, "decal fragment that wins", TEXT_SCALE, DECAL_COLOUR);
+    ring(im, 560, 51, 4, 6, DECAL_COLOUR);
+    text_at(im, 574, 44, "one that loses", TEXT_SCALE, DECAL_COLOUR);
+    text_at(im, 20, 74, "its error: up to m/2 (m: the change of depth per pixel), and under r",
+            TEXT_SCALE, DIM_TEXT);
+    bias_panel(im, 0, 0.2, E07_R, "facing the camera", "units: o = r, wins");
+    bias_panel(im, 1, 3.0, E07_R, "grazing, units only", "o = r: fights");
+    bias_panel(im, 2, 3.0, 3.0 + E07_R, "grazing, factor too", "o = m + r: wins");
+}
+
 /* ---- 08: where the depth test runs, in each --z-mode -------------------------- */
 
 #define E08_WIDTH 940
@@ -1199,6 +1268,7 @@ static const Diagram DIAGRAMS[] = {
     {"04_edge_walk.png", E04_WIDTH, E04_HEIGHT, draw_edge_walk},
     {"05_clipping_cases.png", E05_WIDTH, E05_HEIGHT, draw_clipping_cases},
     {"06_depth_curve.png", E06_WIDTH, E06_HEIGHT, draw_depth_curve},
+    {"07_bias.png", E07_WIDTH, E07_HEIGHT, draw_bias},
     {"08_z_modes.png", E08_WIDTH, E08_HEIGHT, draw_z_modes},
     {"09_tile_bound.png", E09_WIDTH, E09_HEIGHT, draw_tile_bound},
     {"10_bins_blocks.png", E10_WIDTH, E10_HEIGHT, draw_bins_and_blocks},
@@ -1210,7 +1280,7 @@ int main(int argc, char **argv)
         printf("usage: " PROGRAM " DIR\n"
                "Writes the lessons' diagrams into DIR: 02_edge_functions.png,\n"
                "03_depth_along_a_row.png, 04_edge_walk.png, 05_clipping_cases.png,\n"
-               "06_depth_curve.png, 08_z_modes.png, 09_tile_bound.png and\n"
+               "06_depth_curve.png, 07_bias.png, 08_z_modes.png, 09_tile_bound.png and\n"
                "10_bins_blocks.png.\n");
         return EXIT_OK;
     }

@@ -96,6 +96,7 @@ static void diagrams_are_written_at_their_documented_sizes(void **state)
         {"04_edge_walk.png", 820, 600},
         {"05_clipping_cases.png", 920, 420},
         {"06_depth_curve.png", 900, 580},
+        {"07_bias.png", 940, 520},
         {"08_z_modes.png", 940, 590},
         {"09_tile_bound.png", 940, 560},
         {"10_bins_blocks.png", 940, 600},
