@@ -100,6 +100,7 @@ void set_up_held_faces(Target *t, LessonState *s)
     }
     set_up_run(&r[0]);
     Bins *last = fr->bins;
+    bool lost = false;
     for (int k = 0; k < runs; k++) { /* in order: run k's bins after run k - 1's */
         if (k > 0 && !started[k])
             set_up_run(&r[k]);
@@ -107,8 +108,10 @@ void set_up_held_faces(Target *t, LessonState *s)
             pthread_join(id[k], NULL);
         if (h->run[k])
             last->next = h->run[k], last = h->run[k];
-        fr->out_of_memory = fr->out_of_memory || r[k].lost;
+        lost = lost || r[k].lost;
     }
+    /* Only now: the runs still going copied the engine, this flag with it. */
+    fr->out_of_memory = fr->out_of_memory || lost;
     h->nface = h->nv = h->ntri = 0;
 }
 
