@@ -159,6 +159,10 @@ static DropReason clipping_drop_reason(const ScreenFace *f)
     return behind ? BEHIND_NEAR : KEEP;
 }
 
+bool render_face_clippable(const ScreenFace *f)
+{
+    return clipping_drop_reason(f) == KEEP;
+}
 
 bool render_face_dropped(const Render *r, int i)
 {

@@ -85,6 +85,9 @@ ScreenFace render_screen_face(const Render *r, int i);
 /* True when render_faces would drop face i (a corner at or behind the near
  * plane, or not finite on the screen). */
 bool render_face_dropped(const Render *r, int i);
+/* True when render_faces hands f to a rasterizer that clips (lesson 05 on):
+ * every clip coordinate finite, and not every corner behind the near plane. */
+bool render_face_clippable(const ScreenFace *f);
 
 /* The depth buffer as view depth d, width * height floats, top row first,
  * +infinity where no face won. NULL when out of memory. Free with free(). */

@@ -179,21 +179,6 @@ static void a_far_plane_through_a_face_draws_lesson_09s_picture(void **state)
     pictures_free(&got);
 }
 
-/* Whether files a and b hold the same bytes. */
-static bool same_bytes(const char *a, const char *b)
-{
-    FILE *f = fopen(a, "rb"), *g = fopen(b, "rb");
-    bool same = f && g;
-    for (int c; same && (c = getc(f)) != EOF;)
-        same = c == getc(g);
-    same = same && getc(g) == EOF;
-    if (f)
-        fclose(f);
-    if (g)
-        fclose(g);
-    return same;
-}
-
 /* The summary's "fragments: N tested, P passed, F failed" line, up to ';'. */
 static char *fragments_line(const char *program, const char *scene, const char *const *more)
 {
@@ -234,7 +219,7 @@ static void fragments_are_counted_as_lesson_08_counts_them(void **state)
     const char *args10[] = {"--overdraw-out", got.path, "--threads", "3", NULL};
     free(fragments_line("08_early_z", "crowd", args08));
     free(fragments_line(PROGRAM, "crowd", args10));
-    if (!same_bytes(want.path, got.path))
+    if (!files_same_bytes(want.path, got.path))
         fail_msg("crowd: the overdraw counts (--overdraw-out) differ from lesson 08's");
 }
 

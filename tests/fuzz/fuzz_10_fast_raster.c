@@ -45,7 +45,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     rz.state = &all;
     rz.clear(&fast, &all);
     for (int f = 0; f < s.nfaces; f++)
-        if (fuzz_face_drawn(&s.face[f]))
+        if (render_face_clippable(&s.face[f]))
             rz.draw_face(&fast, &all, &s.face[f], &s.ctx);
     finish(&fast, &all);
     fuzz_check(fuzz_same_buffers(&counted, &fast),

@@ -29,6 +29,7 @@
 
 #include "clip.h"
 #include "fuzz_raster.h"
+#include "harness/render.h"
 #include "mesh.h"
 
 #define FUZZ_DECAL 1  /* the face is in group `decal` (lesson 07 on) */
@@ -91,19 +92,6 @@ static inline void fuzz_scene(FuzzScene *s, FuzzBytes *b)
     }
 }
 
-/* What render_faces draws: every clip coordinate finite, a corner not behind near. */
-static inline bool fuzz_face_drawn(const ScreenFace *f)
-{
-    bool behind = true;
-    for (int k = 0; k < f->n; k++) {
-        Vec4 c = f->clip[k];
-        if (!isfinite(c.x) || !isfinite(c.y) || !isfinite(c.z) || !isfinite(c.w))
-            return false;
-        behind = behind && c.z < -c.w;
-    }
-    return !behind;
-}
-
 /* Clears t (a target of the scene's size, counting) with rz and draws the
  * scene's faces; the checks above. finish: a rasterizer that holds faces
  * back draws them there (NULL: none). */
@@ -114,7 +102,7 @@ static inline void fuzz_draw(const FuzzScene *s, const Rasterizer *rz, Target *t
     t->counting = true;
     for (int f = 0; f < s->nfaces; f++) {
         const ScreenFace *face = &s->face[f];
-        if (!fuzz_face_drawn(face))
+        if (!render_face_clippable(face))
             continue;
         uint64_t before = t->stats.tested;
         rz->draw_face(t, rz->state, face, &s->ctx);

@@ -338,6 +338,20 @@ static RunResult run_in(const char *dir, const char *program, const char *const 
     return r;
 }
 
+bool files_same_bytes(const char *a, const char *b)
+{
+    FILE *f = fopen(a, "rb"), *g = fopen(b, "rb");
+    bool same = f && g;
+    for (int c; same && (c = getc(f)) != EOF;)
+        same = c == getc(g);
+    same = same && getc(g) == EOF;
+    if (f)
+        fclose(f);
+    if (g)
+        fclose(g);
+    return same;
+}
+
 RunResult run_program(const char *program, const char *const *args)
 {
     return run_in(env_or("BIN_DIR", "build/bin"), program, args);

@@ -44,6 +44,8 @@ typedef struct {
 /* args: NULL-terminated, without the program name. Fails the test when the
  * program cannot be started at all. Kills it after 60 seconds (status 124). */
 RunResult run_program(const char *program, const char *const *args);
+/* Whether files a and b hold the same bytes (false if either cannot be read). */
+bool files_same_bytes(const char *a, const char *b);
 /* Like run_program, run in directory dir: what it writes to its default
  * out/<program>.png goes there, not into the student's out/. */
 RunResult run_program_in(const char *dir, const char *program, const char *const *args);

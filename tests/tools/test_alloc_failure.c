@@ -70,21 +70,6 @@ static const char *output_flags(const Case *c)
     return flags;
 }
 
-/* Whether files a and b hold the same bytes. */
-static bool same_bytes(const char *a, const char *b)
-{
-    FILE *f = fopen(a, "rb"), *g = fopen(b, "rb");
-    bool same = f && g;
-    for (int c; same && (c = getc(f)) != EOF;)
-        same = c == getc(g);
-    same = same && getc(g) == EOF;
-    if (f)
-        fclose(f);
-    if (g)
-        fclose(g);
-    return same;
-}
-
 /* How many files directory dir holds (dot files too). */
 static int files_in(const char *dir)
 {
@@ -132,7 +117,7 @@ static void every_allocation_that_fails_gives_one_error_line_or_the_same_picture
                     if (!file_exists(path_join(dir, k->outputs[o])))
                         fail_msg("%s, allocation %ld of %ld failing: status 0 without %s\n%s",
                                  k->lesson, at, calls, k->outputs[o], r.output);
-                if (!same_bytes(path_join(dir, k->outputs[1]), want) || strstr(r.output, "error"))
+                if (!files_same_bytes(path_join(dir, k->outputs[1]), want) || strstr(r.output, "error"))
                     fail_msg("%s, allocation %ld of %ld failing: status 0, but another picture "
                              "or an error:\n%s", k->lesson, at, calls, r.output);
             } else if (r.status != 1 || strncmp(r.output, prefix, strlen(prefix)) != 0 ||
