@@ -69,7 +69,14 @@ endif
 lesson_sources = $(wildcard $(LESSON_TREE)/$(1)/*.c $(LESSON_TREE)/$(1)/extras/*.c)
 BINS       := $(LESSONS:%=$(BUILD)/bin/%)
 COMMON_OBJ := $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard common/*.c common/harness/*.c))
-SUPPORT_OBJ:= $(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tests/support/*.c))
+# The test helpers. Their checks record what they see for the grader's judge
+# (tests/support/observe.c); make grade-check alone links, on its command
+# line, checks that never fail in its place (tests/grading/neutered_checks.c).
+ifneq ($(origin OBSERVE_OBJ),command line)
+OBSERVE_OBJ := $(BUILD)/obj/tests/support/observe.o
+endif
+SUPPORT_OBJ:= $(filter-out %/observe.o,$(patsubst %.c,$(BUILD)/obj/%.o,$(wildcard tests/support/*.c))) \
+              $(OBSERVE_OBJ)
 TOOLS      := $(patsubst tools/%.c,$(BUILD)/tools/%,$(wildcard tools/*.c))
 
 # Tests: tests/<group>/test_*.c, where <group> is "common", "tools", or a lesson
@@ -344,6 +351,11 @@ valgrind: $(BINS)
 #       writes $(BUILD)/grade/results.json in Gradescope's format (the test
 #       programs run GRADE_JOBS at a time, the number of cores by default). TEST=name
 #       grades one test; the exit status then says if it passed.
+#       REFERENCE=dir: the verdicts are the judge's (tools/judge.c), from the
+#       records of the teacher's solution in dir, not the test programs' own.
+#   make grade-reference [LESSON=NN] [REFERENCE=dir]
+#       those records, made from this tree (which must hold the solution and
+#       pass every test); dir defaults to $(BUILD)/reference.
 # Without LESSON=, the lessons that have a points file: a handout keeps a
 # lesson whose program its tests run, but not that lesson's tests.
 GRADE_LESSONS := $(if $(LESSON),$(filter $(LESSON)%,$(LESSONS)),\
@@ -351,7 +363,7 @@ GRADE_LESSONS := $(if $(LESSON),$(filter $(LESSON)%,$(LESSONS)),\
 GRADE_TESTS   := $(patsubst tests/%.c,$(BUILD)/tests/%,\
                    $(foreach l,$(GRADE_LESSONS),$(wildcard tests/$(l)/test_*.c)))
 
-.PHONY: handout grade grade-build autograder classroom
+.PHONY: handout grade grade-build grade-reference grade-check autograder classroom
 
 #   make autograder LESSON=NN   the Gradescope autograder zip of one lesson
 #       ($(BUILD)/autograder/<lesson>.zip: setup.sh, run_autograder, the series)
@@ -381,9 +393,21 @@ grade:
 	@$(MAKE) --no-print-directory -k grade-build GRADE_WARNINGS_SHOWN=1 >$(BUILD)/grade/build.log 2>&1 || \
 	    { cat $(BUILD)/grade/build.log; echo "grade: the build failed (above): what did not build scores 0"; }
 	@sh tools/grade.sh --build "$(BUILD)" $(if $(TIME_LIMIT),--time-limit "$(TIME_LIMIT)") \
+	    $(if $(REFERENCE),--reference "$(REFERENCE)") \
 	    $(if $(TEST),--test "$(TEST)") $(GRADE_LESSONS)
 
 grade-build: $(BUILD)/tools/time_limit $(BINS) $(TOOLS) $(GRADE_TESTS)
+
+#   make grade-check [LESSON=NN]   the grader against the series: each lesson's
+#       untouched handout, and the same with checks that never fail, judged
+#       against the teacher's records (tools/grade-check.sh; not in make test)
+grade-check: $(BUILD)/tools/judge $(BUILD)/tools/time_limit
+	@test -f tools/grade-check.sh || { echo "grade-check: error: this is a handout: it needs the teacher's tree" >&2; exit 2; }
+	@sh tools/grade-check.sh --build "$(BUILD)" $(GRADE_LESSONS)
+
+grade-reference: grade-build
+	@sh tools/grade.sh --build "$(BUILD)" $(if $(TIME_LIMIT),--time-limit "$(TIME_LIMIT)") \
+	    --record "$(or $(REFERENCE),$(BUILD)/reference)" $(GRADE_LESSONS)
 
 # ---- make bench: how fast the rasterizers are (docs/performance.md) ---------
 # One binary per lesson, as lessons share function names: tests/bench/bench.c

@@ -38,7 +38,8 @@ mkdir -p "$stage/autograder"
 for f in Makefile README.md common tools tests docs lessons; do
     [ -e "$f" ] && cp -R "$f" "$stage/"
 done
-rm -rf "$stage/tests/tools" "$stage/tests/gpu" "$stage/docs/teaching.md" "$stage/tools/teacher"
+rm -rf "$stage/tests/tools" "$stage/tests/gpu" "$stage/tests/grading" "$stage/tools/grade-check.sh" \
+    "$stage/docs/teaching.md" "$stage/tools/teacher"
 (cd "lessons/$name" && grep -rlE 'SOLUTION BEGIN' . | sed 's|^\./||' | sort) >"$stage/autograder/taught.txt"
 [ -s "$stage/autograder/taught.txt" ] || { echo "$prog: error: lessons/$name has no solution region" >&2; exit 1; }
 sed "s/@LESSON@/$name/g" tools/autograder/run_autograder >"$stage/run_autograder"

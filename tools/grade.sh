@@ -31,17 +31,42 @@
 # --test NAME (make grade TEST=name) grades that one test, run alone in each
 # test program; the exit status is then 0 if it passed and 1 if not, so that
 # a CI step per test can give it its points (GitHub Classroom, docs/teaching.md).
+#
+# Who decides that a test passed. Without --reference, the test program
+# itself, as above: the student's own feedback, on a machine the student
+# controls. With --reference DIR, a judge that holds no student code
+# (tools/judge.c): each test program runs observed (tests/support/observe.h),
+# and the judge compares what its checks saw with DIR/<lesson>/<program>.<test>.obs,
+# the record of the same test run on the teacher's solution; what the program
+# prints, exits with or claims is not a verdict. --record DIR makes those
+# records, from a tree that holds the teacher's solution: every test must pass
+# there, judged against its own record, or nothing is recorded for the lesson.
+# (The autograder records at setup and judges each submission: tools/autograder/.)
+#
+# Where the student's code runs, when the grader gives it no power (the
+# autograder does; docs/teaching.md):
+#   GRADE_DIR          where the grader keeps its files (default DIR/grade)
+#   GRADE_TOOLS        where time_limit and judge are (default DIR/tools)
+#   GRADE_SANDBOX      a command put before each test program (another user)
+#   GRADE_SANDBOX_PREPARE  a command given each test's output directory first
+#   GRADE_SANDBOX_CLEANUP  a command run after each test program (ends every
+#                      process the test started)
+#   GRADE_OWNER        the user id whose pictures the judge accepts
 set -u
 
 prog=grade
 build=build
 limit=${TIME_LIMIT:-10}
 only_test=""
+mode=self
+records=""
 while [ $# -gt 0 ]; do
     case $1 in
         --build) build=$2; shift 2 ;;
         --time-limit) limit=$2; shift 2 ;;
         --test) only_test=$2; shift 2 ;;
+        --record) mode=record; records=$2; shift 2 ;;
+        --reference) mode=reference; records=$2; shift 2 ;;
         -*) echo "$prog: error: unknown option $1" >&2; exit 2 ;;
         *) break ;;
     esac
@@ -49,6 +74,10 @@ done
 if [ $# -eq 0 ]; then
     echo "$prog: error: no lesson to grade" >&2
     echo "usage: make grade [LESSON=NN] [TEST=name] [TIME_LIMIT=seconds per test]" >&2
+    exit 2
+fi
+if [ "$mode" = record ] && [ -n "$only_test" ]; then
+    echo "$prog: error: --record records every test of a lesson, not --test $only_test" >&2
     exit 2
 fi
 case $limit in
@@ -59,9 +88,22 @@ case $jobs in
     ''|*[!0-9]*|0) jobs=1 ;;
 esac
 
-time_limit="$build/tools/time_limit"
+tools=${GRADE_TOOLS:-$build/tools}
+time_limit="$tools/time_limit"
 [ -x "$time_limit" ] || { echo "$prog: error: $time_limit is missing (make tools builds it)" >&2; exit 1; }
-gdir="$build/grade"
+GRADE_JUDGE="$tools/judge"
+if [ "$mode" != self ]; then
+    [ -x "$GRADE_JUDGE" ] || { echo "$prog: error: $GRADE_JUDGE is missing (make tools builds it)" >&2; exit 1; }
+    case $records in
+        /*) ;;
+        *) records="$(pwd)/$records" ;;
+    esac
+    if [ "$mode" = reference ] && [ ! -d "$records" ]; then
+        echo "$prog: error: no records of the teacher's solution in $records (make them with --record)" >&2
+        exit 1
+    fi
+fi
+gdir=${GRADE_DIR:-$build/grade}
 mkdir -p "$gdir" || exit 1
 start=$(date +%s)
 # TOTAL_TIME_LIMIT=seconds: the whole grading ends by then, whatever the code
@@ -84,6 +126,10 @@ esac
 GRADE_PRIVATE=$(mktemp -d "${TMPDIR:-/tmp}/grade.XXXXXXXXXX") || { echo "$prog: error: no temporary directory" >&2; exit 1; }
 trap 'rm -rf "$GRADE_PRIVATE"' EXIT
 export GRADE_DEADLINE GRADE_PRIVATE GRADE_LIMIT="$limit" GRADE_BUILD="$build" GRADE_OUTPUT="$build/test-output/grade"
+export GRADE_MODE="$mode" GRADE_RECORDS="$records" GRADE_JUDGE
+export GRADE_SANDBOX="${GRADE_SANDBOX:-}" GRADE_SANDBOX_PREPARE="${GRADE_SANDBOX_PREPARE:-}"
+export GRADE_SANDBOX_CLEANUP="${GRADE_SANDBOX_CLEANUP:-}"
+export GRADE_OWNER_ARG="${GRADE_OWNER:+--owner $GRADE_OWNER}"
 rm -rf "$GRADE_OUTPUT"
 export BIN_DIR="$build/bin" TOOL_DIR="$build/tools" TEST_OUTPUT="$build/test-output"
 
@@ -189,10 +235,33 @@ for lesson in "$@"; do
     export GRADE_LDIR="$ldir" GRADE_LESSON="$lesson"
     # Which program has which test: each built program lists its tests
     # (GRADE_LIST=1, test_hooks.c), running none. A list only says where to
-    # look: a test's result never comes from what a program prints.
+    # look: a test's result never comes from what a program prints. Judged
+    # against records, the records say it: the student's programs are not asked.
     : >"$ldir/where"       # test <tab> binary
     : >"$ldir/bins"
+    if [ "$mode" = record ]; then
+        rm -rf "$records/$lesson.new"
+        mkdir -p "$records/$lesson.new" || { echo "$prog: error: cannot write $records" >&2; exit 1; }
+    fi
+    if [ "$mode" = reference ]; then
+        if [ ! -d "$records/$lesson" ]; then
+            echo "$prog: error: no records of the teacher's solution of $lesson in $records" >&2
+            status=1
+            continue
+        fi
+        for f in "$records/$lesson"/*.obs; do
+            [ -f "$f" ] || continue
+            b=${f##*/}
+            b=${b%.obs}
+            printf '%s\t%s\n' "${b#*.}" "${b%%.*}"
+        done >"$ldir/where"
+        cut -f 2 "$ldir/where" | sort -u >"$ldir/bins"
+        while read -r bin; do
+            [ -x "$build/tests/$lesson/$bin" ] || missing="$missing $bin"
+        done <"$ldir/bins"
+    fi
     for src in tests/"$lesson"/test_*.c; do
+        [ "$mode" != reference ] || break
         [ -f "$src" ] || continue
         bin=$(basename "$src" .c)
         exe="$build/tests/$lesson/$bin"
@@ -240,17 +309,48 @@ for lesson in "$@"; do
         echo "$nonce" >"$d/n"
         # Its own TEST_OUTPUT: tests of one program run side by side here,
         # and their scratch files must not meet.
-        mkdir -p "$GRADE_OUTPUT/$bin.$name"
-        env -u UPDATE_EXPECTED TEST_OUTPUT="$GRADE_OUTPUT/$bin.$name" \
-            TEST_FILTER="$name" GRADE_NONCE_FILE="$d/n" GRADE_RESULT_FILE="$d/r" \
-            "$0" "$lim" "$GRADE_BUILD/tests/$GRADE_LESSON/$bin" >"$out.log" 2>&1 </dev/null
-        st=$?
+        tout="$GRADE_OUTPUT/$bin.$name"
+        rm -rf "$tout"
+        mkdir -p "$tout"
+        [ -z "$GRADE_SANDBOX_PREPARE" ] || $GRADE_SANDBOX_PREPARE "$tout"
+        exe="$GRADE_BUILD/tests/$GRADE_LESSON/$bin"
+        if [ "$GRADE_MODE" = self ]; then
+            env -u UPDATE_EXPECTED TEST_OUTPUT="$tout" \
+                TEST_FILTER="$name" GRADE_NONCE_FILE="$d/n" GRADE_RESULT_FILE="$d/r" \
+                "$0" "$lim" $GRADE_SANDBOX "$exe" >"$out.log" 2>&1 </dev/null
+            st=$?
+        else
+            # Observed: what its checks saw goes to descriptor 3 (observe.h).
+            env -u UPDATE_EXPECTED TEST_OUTPUT="$tout" TEST_FILTER="$name" GRADE_OBSERVE_FD=3 \
+                "$0" "$lim" $GRADE_SANDBOX "$exe" >"$out.log" 2>&1 </dev/null 3>"$out.obs"
+            st=$?
+        fi
+        [ -z "$GRADE_SANDBOX_CLEANUP" ] || $GRADE_SANDBOX_CLEANUP
         r=$(cat "$d/r" 2>/dev/null)
         rm -rf "$d"
-        if [ "$r" = "$nonce passed $name" ] && [ "$st" -eq 0 ]; then v=pass
-        elif [ "$r" = "$nonce failed $name" ]; then v=fail
-        elif [ "$r" = "$nonce passed $name" ]; then v=fail
-        else v=unfinished; fi
+        case $GRADE_MODE in
+        self)
+            if [ "$r" = "$nonce passed $name" ] && [ "$st" -eq 0 ]; then v=pass
+            elif [ "$r" = "$nonce failed $name" ]; then v=fail
+            elif [ "$r" = "$nonce passed $name" ]; then v=fail
+            else v=unfinished; fi ;;
+        record)
+            # The teacher'"'"'s run: judged against itself (its pictures against
+            # tests/expected/), it must pass to become the record.
+            if [ "$st" -eq 0 ] && "$GRADE_JUDGE" "$out.obs" "$out.obs" "$tout" >>"$out.log"; then
+                v=pass
+                cp "$out.obs" "$GRADE_RECORDS/$GRADE_LESSON.new/$bin.$name.obs" || v=fail
+            elif [ "$st" -eq 0 ] || grep -q "^E " "$out.obs"; then v=fail
+            else v=unfinished; fi ;;
+        reference)
+            # The verdict is the judge'"'"'s alone: the record against the teacher'"'"'s.
+            "$GRADE_JUDGE" $GRADE_OWNER_ARG "$GRADE_RECORDS/$GRADE_LESSON/$bin.$name.obs" \
+                "$out.obs" "$tout" >>"$out.log"
+            j=$?
+            if [ "$j" -eq 0 ] && [ "$st" -eq 0 ]; then v=pass
+            elif [ "$st" -eq 0 ] || [ "$j" -ne 1 ] || grep -q "^E " "$out.obs" 2>/dev/null; then v=fail
+            else v=unfinished; fi ;;
+        esac
         echo "$v $st $lim" >"$out.verdict"' "$time_limit" <"$ldir/jobs"
 
     # The verdicts: a test passes if a program that has it passed it.
@@ -261,7 +361,16 @@ for lesson in "$@"; do
         log="$ldir/run/$bin.$name.log"
         if grep -q "^$name	pass	" "$ldir/results"; then continue; fi
         # Bytes that are not plain text (and are not valid UTF-8 in JSON) as "?".
-        LC_ALL=C tr -d '\000' <"$log" | LC_ALL=C tr '\200-\377' '?' >"$ldir/out/$bin/$name.out"
+        # At most its first and last 3000 bytes, whatever the size of the log
+        # (a debug print per fragment writes gigabytes): head and tail read
+        # no more than that.
+        size=$(wc -c <"$log" 2>/dev/null || echo 0)
+        if [ "$size" -gt 6000 ]; then
+            { head -c 3000 "$log"; printf '\n[... %s bytes of output left out ...]\n' $((size - 6000))
+              tail -c 3000 "$log"; }
+        else
+            cat "$log" 2>/dev/null
+        fi | LC_ALL=C tr -d '\000' | LC_ALL=C tr '\200-\377' '?' >"$ldir/out/$bin/$name.out"
         case $v in
             pass|fail) how=$v ;;
             budget) how=crash
@@ -281,6 +390,16 @@ for lesson in "$@"; do
         fi
         printf '%s\t%s\t%s\n' "$name" "$how" "$bin" >>"$ldir/results"
     done <"$ldir/jobs"
+    if [ "$mode" = record ]; then
+        if [ -n "$missing" ] || awk -F '\t' '$2 != "pass" { bad = 1 } END { exit !bad }' "$ldir/results"; then
+            echo "$prog: error: the teacher's solution of $lesson does not pass every test (below): nothing is recorded for it" >&2
+            rm -rf "$records/$lesson.new"
+            status=1
+        else
+            rm -rf "$records/$lesson"
+            mv "$records/$lesson.new" "$records/$lesson" || status=1
+        fi
+    fi
 
     # The table, and this lesson's entries of results.json.
     echo "$prog: $lesson (points from $points)"
@@ -300,7 +419,6 @@ for lesson in "$@"; do
             s = ""
             while ((getline l < f) > 0) { s = s l "\n"; last_line = l }
             close(f)
-            if (length(s) > 6000) s = substr(s, 1, 3000) "\n[...]\n" substr(s, length(s) - 2999)
             return s
         }
         function entry(name, score, max, status, out, vis) {

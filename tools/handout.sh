@@ -9,7 +9,8 @@
 # with each solution region (tools/solution-regions.awk says what that is)
 # replaced by a TODO(student): comment and its stub. The other lessons come
 # as they are, or, with --only, are left out with their tests and pages.
-# Left out always: the teacher's own checks of these tools (tests/tools/), the
+# Left out always: the teacher's own checks of these tools (tests/tools/,
+# tests/grading/, tools/grade-check.sh), the
 # teacher's guide and key (tools/teacher/), the GPU reference (tests/gpu/); the
 # benchmark's limit (tests/bench/limit.c times a copy of the depth test, so
 # make bench does not work in a handout: it times the finished lessons); the
@@ -120,6 +121,8 @@ for f in Makefile README.md .gitignore .editorconfig common tools tests docs les
     if [ -e "$f" ]; then copy "$f"; fi
 done
 rm -rf "$tmp/tests/tools" "$tmp/tests/gpu" "$tmp/tests/bench/limit.c"
+# The grader's check against the series needs the solution (make grade-check).
+rm -rf "$tmp/tests/grading" "$tmp/tools/grade-check.sh"
 # The teacher's material: the guide (it names every answer), the answer key
 # and anything else under tools/teacher/, never in a student's tree.
 rm -rf "$tmp/tools/teacher" "$tmp/docs/teaching.md"

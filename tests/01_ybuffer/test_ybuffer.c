@@ -76,6 +76,7 @@ typedef struct {
 /* Every column of every run, so that each boundary column is pinned. */
 static void expect_runs(const YBuffer *yb, const Run *runs, int n)
 {
+    observe_data("owners", yb->owner, (size_t)yb->width * sizeof *yb->owner);
     int x = 0;
     for (int r = 0; r < n; r++) {
         assert_int_equal(runs[r].first, x); /* the runs of a test must tile the row */
@@ -90,6 +91,8 @@ static void expect_runs(const YBuffer *yb, const Run *runs, int n)
 
 static void expect_y(const YBuffer *yb, int x, int y, int owner, const char *why)
 {
+    observe_value("y", yb->y[x]);
+    observe_value("owner", yb->owner[x]);
     if (yb->y[x] != y || yb->owner[x] != owner)
         fail_msg("column %d (%s): y-buffer holds %d won by %s, expected %d won by %s", x, why,
                  yb->y[x], owner_name(yb->owner[x]), y, owner_name(owner));
@@ -180,6 +183,8 @@ static void all_six_orders_agree_except_the_tie(void **state)
     draw_scene(&first, ORDERS[0]);
     for (int o = 1; o < 6; o++) {
         draw_scene(&other, ORDERS[o]);
+        observe_data("y", other.y, WIDTH * sizeof *other.y);
+        observe_data("owners", other.owner, WIDTH * sizeof *other.owner);
         for (int x = 0; x < WIDTH; x++) {
             if (other.y[x] != first.y[x])
                 fail_msg("order %d%d%d, column %d: y-buffer %d, order 123 gives %d",
@@ -241,6 +246,10 @@ static void endpoints_in_either_order_give_the_same_walk(void **state)
 {
     (void)state;
     const Segment red_backwards = {744, 400, 20, 34, {255, 0, 0}};
+    for (int x = 20; x <= 744; x++) {
+        observe_value("backwards", segment_y_at(&red_backwards, x));
+        observe_value("forwards", segment_y_at(&SCENE[RED], x));
+    }
     for (int x = 20; x <= 744; x++)
         if (segment_y_at(&red_backwards, x) != segment_y_at(&SCENE[RED], x))
             fail_msg("column %d: right-to-left red gives %d, left-to-right %d", x,

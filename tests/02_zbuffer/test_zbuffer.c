@@ -64,6 +64,7 @@ static void zbuffer_resolves_the_cycle_of_triangles3(void **state)
     assert_true(render_faces(&r, &t, &ZBUFFER, NULL, 0, NULL, NULL, &err));
     for (int k = 0; k < 3; k++) {
         const Overlap *o = &OVERLAPS[k];
+        observe_value("face", target_face_at(&t, o->x, o->y));
         if (target_face_at(&t, o->x, o->y) != o->front)
             fail_msg("pixel (%d,%d): %s should cover %s, the z-buffer shows face %d", o->x,
                      o->y, NAMES[o->front], NAMES[o->back], target_face_at(&t, o->x, o->y));
@@ -126,6 +127,7 @@ static void depth_of_triangles3_is_linear_on_the_screen(void **state)
     const double naive[3] = {9.489, 9.466, 9.515}, perspective[3] = {9.419, 9.398, 9.442};
     for (int k = 0; k < 3; k++) {
         double d = target_depth_at(&t, OVERLAPS[k].x, OVERLAPS[k].y);
+        observe_near(d, naive[k], 1e-3);
         if (fabs(d - naive[k]) > 1e-3)
             fail_msg("pixel (%d,%d): depth %.5f, the linear interpolation by hand gives %.3f",
                      OVERLAPS[k].x, OVERLAPS[k].y, d, naive[k]);
@@ -156,6 +158,8 @@ static void depth_is_interpolated_linearly_at_chosen_pixels(void **state)
     draw_face(&t, NULL, &f, &ctx);
     const struct { int x, y; float d; } want[4] = {
         {15, 31, 3.453125f}, {40, 10, 2.921875f}, {0, 0, 1.046875f}, {62, 0, 2.984375f}};
+    for (int k = 0; k < 4; k++)
+        observe_near(target_depth_at(&t, want[k].x, want[k].y), want[k].d, 0.0);
     for (int k = 0; k < 4; k++)
         if (target_depth_at(&t, want[k].x, want[k].y) != want[k].d)
             fail_msg("pixel (%d,%d): depth %.9g, by hand %.9g", want[k].x, want[k].y,

@@ -39,6 +39,7 @@ static void draw_screen_triangle(Target *t, const Rasterizer *rz, ScreenVertex a
 
 static void expect_relative(double got, double want, double tolerance, const char *what)
 {
+    observe_near(got, want, tolerance * fabs(want));
     if (!(fabs(got - want) <= tolerance * fabs(want)))
         fail_msg("%s: got %.9g, expected %.9g (relative error %.2g, allowed %.1g)", what, got,
                  want, fabs(got - want) / fabs(want), tolerance);
@@ -58,6 +59,8 @@ static void worked_example_gives_2_5_and_naive_gives_2_7(void **state)
     Barycentric w = {0.5, 0.3, 0.2};
     double right = interpolate_depth(w, 1.0 / 2, 1.0 / 3, 1.0 / 4);
     double naive = interpolate_depth_naive(w, 2, 3, 4);
+    observe_near(right, 2.5, 1e-12);
+    observe_near(naive, 2.7, 1e-12);
     if (fabs(right - 2.5) > 1e-12)
         fail_msg("interpolate_depth gave %.17g, the worked example says 2.5", right);
     if (fabs(naive - 2.7) > 1e-12)
@@ -158,6 +161,7 @@ static void triangles3_depth_is_where_the_ray_meets_the_plane(void **state)
     assert_true(render_faces(&r, &t, &ZBUFFER, NULL, 0, NULL, NULL, &err));
     for (int k = 0; k < 3; k++) {
         const Overlap *o = &OVERLAPS[k];
+        observe_value("face", target_face_at(&t, o->x, o->y));
         if (target_face_at(&t, o->x, o->y) != o->front)
             fail_msg("pixel (%d,%d): face %d should be in front, the z-buffer shows face %d",
                      o->x, o->y, o->front, target_face_at(&t, o->x, o->y));

@@ -28,6 +28,13 @@
 
 static void expect_corners(const Vec4 *got, int n, const Vec4 *want, int m, const char *what)
 {
+    observe_value("corners", n);
+    for (int i = 0; i < n && i < m; i++) {
+        observe_near(got[i].x, want[i].x, EPS);
+        observe_near(got[i].y, want[i].y, EPS);
+        observe_near(got[i].z, want[i].z, EPS);
+        observe_near(got[i].w, want[i].w, EPS);
+    }
     if (n != m)
         fail_msg("%s: %d corners, expected %d", what, n, m);
     for (int i = 0; i < n; i++)
@@ -185,6 +192,9 @@ static void the_divide_is_the_pipelines(void **state)
         Vec3 p = vec3(sin(i * 1.3) * 4, cos(i * 0.7) * 3, -1 - i * 0.37);
         ScreenVertex a = camera_project(&cam, p);
         ScreenVertex b = clip_to_screen(camera_to_clip(&cam, p), 317, 211);
+        observe_near(b.x, a.x, 0.0);
+        observe_near(b.y, a.y, 0.0);
+        observe_near(b.d, a.d, 0.0);
         if (a.x != b.x || a.y != b.y || a.d != b.d)
             fail_msg("point %d: camera_project gives (%.17g, %.17g, %.17g), clip_to_screen "
                      "(%.17g, %.17g, %.17g)", i, a.x, a.y, a.d, b.x, b.y, b.d);

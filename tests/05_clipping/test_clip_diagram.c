@@ -95,6 +95,7 @@ static void clipping_diagram_shows_what_clip_to_plane_keeps(void **state)
         int m = clip_to_plane(in, 3, NEAR_PLANE, out);
         double cx[MAX_DOTS], cy[MAX_DOTS];
         int dots = dots_in_panel(&im, k, cx, cy);
+        observe_value("corners kept", m);
         if (dots != m)
             fail_msg("panel %d shows %d corners; clip_to_plane keeps %d", k + 1, dots, m);
         for (int i = 0; i < m; i++) {
@@ -103,6 +104,7 @@ static void clipping_diagram_shows_what_clip_to_plane_keeps(void **state)
             double nearest = INFINITY;
             for (int j = 0; j < dots; j++)
                 nearest = fmin(nearest, hypot(cx[j] - x, cy[j] - y));
+            observe_near(nearest, 0.0, 1.0);
             if (nearest > 1.0)
                 fail_msg("panel %d: clip_to_plane's corner %d, (x %.3f, d %.3f), has no dot "
                          "within a pixel (nearest %.2f away)", k + 1, i, out[i].x, out[i].w, nearest);

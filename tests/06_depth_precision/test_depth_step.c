@@ -108,6 +108,7 @@ static void issue_figures_at_near_0_1_far_1000_d_100(void **state)
     for (size_t k = 0; k < sizeof FIG / sizeof FIG[0]; k++) {
         DepthSetup s = depth_setup(FIG[k].fmt, FIG[k].m, NEAR, FAR);
         double got = depth_step(&s, 100);
+        observe_near(got, FIG[k].metres, 1e-6 * FIG[k].metres);
         if (fabs(got - FIG[k].metres) > 1e-6 * FIG[k].metres)
             fail_msg("format %d mapping %d: step at d = 100 is %.9g m, the page says %.9g m",
                      FIG[k].fmt, FIG[k].m, got, FIG[k].metres);

@@ -29,6 +29,7 @@
 
 static void expect_close(double expected, double actual, const char *what)
 {
+    observe_near(actual, expected, 1e-9 * fabs(expected) + 1e-18);
     if (!(fabs(actual - expected) <= 1e-9 * fabs(expected) + 1e-18))
         fail_msg("%s: expected %.12g, got %.12g", what, expected, actual);
 }
@@ -44,6 +45,7 @@ static double m_of(const DepthSetup *s, ScreenVertex a, ScreenVertex b, ScreenVe
 /* The plane is worked out in float32: a slope on paper holds to 1e-4 of itself. */
 static void expect_float_close(double expected, double actual, const char *what)
 {
+    observe_near(actual, expected, 1e-4 * fabs(expected));
     if (!(fabs(actual - expected) <= 1e-4 * fabs(expected)))
         fail_msg("%s: expected %.9g, got %.9g", what, expected, actual);
 }

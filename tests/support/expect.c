@@ -7,6 +7,7 @@
 #include <cmocka.h>
 
 #include "expect.h"
+#include "observe.h"
 
 #include <stdio.h>
 
@@ -169,13 +170,14 @@ bool target_face_message(char *msg, size_t size, const Target *t, int x, int y,
 static void fail_with(const char *msg, const char *file, int line)
 {
     print_error("%s\n", msg);
-    _fail(file, line);
+    observed_fail(file, line);
 }
 
 void expect_count_at(long expected, long actual, const char *what, const char *file,
                      int line)
 {
     char msg[MESSAGE_MAX];
+    observe_exact(file, line, "count %ld %ld", expected, actual);
     if (!count_message(msg, sizeof msg, expected, actual, what))
         fail_with(msg, file, line);
 }
@@ -184,6 +186,7 @@ void expect_at_least_at(long least, long actual, const char *what, const char *f
                         int line)
 {
     char msg[MESSAGE_MAX];
+    observe_bound(file, line, '>', actual, least);
     if (!at_least_message(msg, sizeof msg, least, actual, what))
         fail_with(msg, file, line);
 }
@@ -191,6 +194,7 @@ void expect_at_least_at(long least, long actual, const char *what, const char *f
 void expect_at_most_at(long most, long actual, const char *what, const char *file, int line)
 {
     char msg[MESSAGE_MAX];
+    observe_bound(file, line, '<', actual, most);
     if (!at_most_message(msg, sizeof msg, most, actual, what))
         fail_with(msg, file, line);
 }
@@ -199,6 +203,8 @@ void expect_colour_at(Rgb expected, Rgb actual, const char *what, const char *fi
                       int line)
 {
     char msg[MESSAGE_MAX];
+    observe_exact(file, line, "colour %d,%d,%d %d,%d,%d", expected.r, expected.g, expected.b,
+                  actual.r, actual.g, actual.b);
     if (!colour_message(msg, sizeof msg, expected, actual, what))
         fail_with(msg, file, line);
 }
@@ -207,6 +213,7 @@ void expect_colour_that_at(Rgb actual, bool ok, const char *what, const char *ex
                            const char *file, int line)
 {
     char msg[MESSAGE_MAX];
+    observe_exact(file, line, "colour that %d", ok);
     if (!colour_that_message(msg, sizeof msg, actual, ok, what, expected_words))
         fail_with(msg, file, line);
 }
@@ -215,6 +222,9 @@ void expect_pixel_at(const Image *im, int x, int y, Rgb expected, const char *wh
                      const char *file, int line)
 {
     char msg[MESSAGE_MAX];
+    Rgb got = inside(x, y, im->width, im->height) ? image_get(im, x, y) : (Rgb){0, 0, 0};
+    observe_exact(file, line, "pixel %d %d %d,%d,%d %d,%d,%d", x, y, expected.r, expected.g,
+                  expected.b, got.r, got.g, got.b);
     if (!pixel_message(msg, sizeof msg, im, x, y, expected, what))
         fail_with(msg, file, line);
 }
@@ -223,6 +233,9 @@ void expect_face_at_at(const Image *id_picture, int x, int y, int32_t face, cons
                        const char *file, int line)
 {
     char msg[MESSAGE_MAX];
+    observe_exact(file, line, "face %d %d %ld %ld", x, y, (long)face,
+                  inside(x, y, id_picture->width, id_picture->height)
+                      ? (long)face_at(id_picture, x, y) : -2L);
     if (!face_message(msg, sizeof msg, id_picture, x, y, face, what))
         fail_with(msg, file, line);
 }
@@ -231,6 +244,8 @@ void expect_target_face_at(const Target *t, int x, int y, int32_t face, const ch
                            const char *file, int line)
 {
     char msg[MESSAGE_MAX];
+    observe_exact(file, line, "target face %d %d %ld %ld", x, y, (long)face,
+                  inside(x, y, t->width, t->height) ? (long)target_face_at(t, x, y) : -2L);
     if (!target_face_message(msg, sizeof msg, t, x, y, face, what))
         fail_with(msg, file, line);
 }

@@ -10,9 +10,11 @@
  * - UPDATE_EXPECTED: while grading it is ignored altogether, whatever the
  *   code under test sets (test_update_expected()).
  *
- * Grading (tools/grade.sh, docs/teaching.md "Results a student cannot
- * forge"). The grader does not read what a test prints to decide whether it
- * passed: the process runs the student's code, which can print anything. It
+ * Grading without a reference (tools/grade.sh, docs/teaching.md "Who
+ * decides that a test passed"): the student's own feedback. (With a
+ * reference, GRADE_OBSERVE_FD=n records what each check saw, observe.h, and
+ * a judge decides.) The grader does not read what a test prints to decide
+ * whether it passed: the process runs the student's code, which can print anything. It
  * gives the test program two files instead, GRADE_NONCE_FILE (a random
  * number, fresh for each run) and GRADE_RESULT_FILE. Before main() this file
  * reads the number, deletes its file and takes both names out of the
@@ -95,6 +97,17 @@ __attribute__((constructor)) static void before_main(void)
     }
     unsetenv("GRADE_NONCE_FILE");
     unsetenv("GRADE_RESULT_FILE");
+    /* GRADE_OBSERVE_FD=n: write what each check compares to n (observe.h). */
+    const char *observe_fd = getenv("GRADE_OBSERVE_FD");
+    if (observe_fd && *observe_fd) {
+        char *end;
+        long fd = strtol(observe_fd, &end, 10);
+        if (*end == '\0' && fd > 2 && fd < 1024) {
+            grading = true;
+            observe_start((int)fd);
+        }
+    }
+    unsetenv("GRADE_OBSERVE_FD");
     if (grading)
         unsetenv("UPDATE_EXPECTED");
 }
@@ -129,6 +142,8 @@ int __wrap__cmocka_run_group_tests(const char *group_name, const struct CMUnitTe
             }
     int failed = __real__cmocka_run_group_tests(group_name, tests, num_tests, group_setup,
                                                 group_teardown);
+    if (matching == 1)
+        observe_end(failed == 0);
     if (result_fd >= 0 && nonce[0] && matching == 1) {
         char line[NONCE_MAX + 300];
         int n = snprintf(line, sizeof line, "%s %s %s\n", nonce, failed == 0 ? "passed" : "failed",

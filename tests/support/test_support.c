@@ -13,6 +13,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <inttypes.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -90,7 +91,7 @@ static bool update_requested(void)
 /* Fails the test at the caller's line, after the lines print_error printed. */
 static void fail_at(const char *file, int line)
 {
-    _fail(file, line);
+    observed_fail(file, line);
 }
 
 static void update_expected(const Image *actual, const char *group, const char *path,
@@ -168,6 +169,22 @@ void expect_image_tolerant(const Image *actual, const char *group, const char *n
     char expected_path[PATH_BUF], lesson[PATH_BUF];
     snprintf(expected_path, sizeof expected_path, "tests/expected/%s/%s.png", group, name);
     lesson_selector(group, lesson, sizeof lesson);
+    if (observing()) {
+        /* Observed for the grader: the picture is written where the judge
+         * finds it, and the judge compares it with the expected image, which
+         * this program does not read (observe.h). */
+        char actual_name[PATH_BUF];
+        snprintf(actual_name, sizeof actual_name, "%s.actual.png", name);
+        const char *dir = path_join(test_output_dir(), group);
+        Error err;
+        if (!make_dirs(dir, &err) || !image_write_png(actual, path_join(dir, actual_name), &err)) {
+            print_error("cannot write the picture for the grader: %s\n", err.msg);
+            fail_at(file, line);
+        }
+        observe_picture(file, line, group, name, max_differing_pixels, channel_tolerance,
+                        actual->width, actual->height, (const uint8_t *)actual->rgb);
+        return;
+    }
     if (update_requested()) {
         update_expected(actual, group, expected_path, file, line);
         return;
@@ -335,11 +352,33 @@ static RunResult run_in(const char *dir, const char *program, const char *const 
         fail_msg("cannot run %s: %s (was it built? make builds the lessons and tools)",
                  path, strerror(exec_errno));
     }
+    /* What the program did, for the grader's judge (observe.h): a test reads
+     * these, whatever it then checks of them. */
+    observe_exact(__FILE__, __LINE__, "run %s status %d", program, r.status);
+    observe_exact_string(__FILE__, __LINE__, "stdout", r.out);
+    observe_exact_string(__FILE__, __LINE__, "stderr", r.err);
     return r;
+}
+
+/* The bytes of a file the test reads, observed (none: "absent"). */
+static void observe_file(const char *path)
+{
+    if (!observing())
+        return;
+    char *data = NULL;
+    size_t len = 0;
+    Error err;
+    if (read_file(path, 1 << 28, &data, &len, &err))
+        observe_exact_data(__FILE__, __LINE__, "file", data, len);
+    else
+        observe_exact(__FILE__, __LINE__, "file absent");
+    free(data);
 }
 
 bool files_same_bytes(const char *a, const char *b)
 {
+    observe_file(a);
+    observe_file(b);
     FILE *f = fopen(a, "rb"), *g = fopen(b, "rb");
     bool same = f && g;
     for (int c; same && (c = getc(f)) != EOF;)
@@ -473,6 +512,7 @@ char *read_text(const char *path)
     Error err;
     if (!read_file(path, TEXT_FILE_MAX, &data, &len, &err))
         fail_msg("%s", err.msg);
+    observe_exact_data(__FILE__, __LINE__, "text", data, len);
     return data;
 }
 
@@ -482,6 +522,8 @@ Image read_png(const char *path)
     Error err;
     if (!image_read_png(&im, path, &err))
         fail_msg("cannot read %s: %s", path, err.msg);
+    observe_exact(__FILE__, __LINE__, "png %016" PRIx64,
+                  observe_picture_hash(im.width, im.height, im.rgb));
     return im;
 }
 

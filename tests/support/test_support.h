@@ -20,7 +20,11 @@
  *
  * Checks that say what was expected and what came, in words and decimal
  * (expect_count, expect_pixel, expect_face_at, ...): see expect.h, included
- * here so that every test has them. */
+ * here so that every test has them.
+ *
+ * Every check, these and cmocka's, is also observed for the grader's judge
+ * when the grader asks (observe.h, included here: it replaces cmocka's
+ * assert_* and fail() by checks that observe). */
 #ifndef TEST_SUPPORT_H
 #define TEST_SUPPORT_H
 
@@ -28,6 +32,7 @@
 
 #include "expect.h"
 #include "harness/image_io.h"
+#include "observe.h"
 
 void expect_image_tolerant(const Image *actual, const char *group, const char *name,
                            long max_differing_pixels, int channel_tolerance,

@@ -103,6 +103,79 @@ static const char POINTS[] =
 #define EXPECTED_SCORE 6.0
 #define EXPECTED_MAX 11.0
 
+/* A second made-up lesson, whose tests all pass on its solution (as a real
+ * lesson's do), for make grade-reference and make grade REFERENCE=. Its
+ * tests include test_support.h, as the series' do: their checks are
+ * observed (tests/support/observe.h). */
+static const char SUM_H[] = "int sum_to(int n);\n";
+static const char SUM_C[] =
+    "#include \"sum.h\"\n"
+    "/* 1 + 2 + ... + n. */\n"
+    "int sum_to(int n)\n{\n"
+    "    /* SOLUTION BEGIN: the sum of 1 to n */\n"
+    "    return n * (n + 1) / 2;\n"
+    "    /* SOLUTION STUB\n"
+    "    (void)n;\n"
+    "    return 0;\n"
+    "    */\n"
+    "    /* SOLUTION END */\n"
+    "}\n";
+static const char SUM_MAIN_C[] = "#include \"sum.h\"\nint main(void) { return sum_to(0); }\n";
+static const char TEST_SUM_C[] =
+    "#include <setjmp.h>\n#include <stdarg.h>\n#include <stddef.h>\n#include <stdint.h>\n"
+    "#include <cmocka.h>\n#include \"sum.h\"\n#include \"test_support.h\"\n"
+    "static void sums_to_ten(void **s) { (void)s; assert_int_equal(sum_to(10), 55); }\n"
+    "static void sums_in_a_loop(void **s) { (void)s;\n"
+    "    int want = 0;\n"
+    "    for (int n = 0; n < 50; want += ++n) {\n"
+    "        observe_value(\"sum\", sum_to(n));\n"
+    "        if (sum_to(n) != want) fail_msg(\"n = %d: %d\", n, sum_to(n));\n"
+    "    } }\n"
+    "static void at_least_the_last(void **s) { (void)s; expect_at_least(7, sum_to(7), \"sum\"); }\n"
+    "static void needs_no_work(void **s) { (void)s; assert_int_equal(1 + 1, 2); }\n"
+    "int main(void) {\n"
+    "    const struct CMUnitTest t[] = {cmocka_unit_test(sums_to_ten),\n"
+    "        cmocka_unit_test(sums_in_a_loop), cmocka_unit_test(at_least_the_last),\n"
+    "        cmocka_unit_test(needs_no_work)};\n"
+    "    return cmocka_run_group_tests(t, NULL, NULL);\n}\n";
+static const char SUM_POINTS[] = "sums_to_ten        2  sum_to(): 1 to 10\n"
+                                 "sums_in_a_loop     2  sum_to(): 0 to 49\n"
+                                 "at_least_the_last  1  sum_to(): at least 7 for 7\n"
+                                 "needs_no_work      0  (passes without the student's work) 1 + 1\n";
+
+/* Code that tries to pass without the work, each way a test program linked
+ * with it could be turned: cmocka's checks replaced by ones that do nothing
+ * (the dynamic linker takes the program's own over the library's), a
+ * record written by hand to every descriptor, an exit before the test ends
+ * with the words of a passed test printed, a verdict file written. */
+static const char SUM_NEUTERS_CMOCKA_C[] =
+    "#include \"sum.h\"\n#include <stdint.h>\n#include <stddef.h>\n"
+    "void _assert_int_equal(uintmax_t a, uintmax_t b, const char *f, int l);\n"
+    "void _assert_int_equal(uintmax_t a, uintmax_t b, const char *f, int l)"
+    " { (void)a; (void)b; (void)f; (void)l; }\n"
+    "void _assert_true(uintmax_t r, const char *e, const char *f, int l);\n"
+    "void _assert_true(uintmax_t r, const char *e, const char *f, int l)"
+    " { (void)r; (void)e; (void)f; (void)l; }\n"
+    "void _fail(const char *f, int l);\n"
+    "void _fail(const char *f, int l) { (void)f; (void)l; }\n"
+    "int sum_to(int n) { (void)n; return 0; }\n";
+static const char SUM_WRITES_RECORD_C[] =
+    "#include \"sum.h\"\n#include <stdio.h>\n#include <string.h>\n#include <unistd.h>\n"
+    "int sum_to(int n) { (void)n;\n"
+    "    const char *forged = \"D 1 0123456789abcdef\\nB x.c:1 > 7 7 1\\nE passed\\n\";\n"
+    "    for (int fd = 3; fd < 64; fd++) (void)!write(fd, forged, strlen(forged));\n"
+    "    printf(\"[       OK ] sums_to_ten\\n[  PASSED  ] 1 test(s).\\n\");\n"
+    "    fflush(stdout);\n"
+    "    _exit(0); }\n";
+static const char SUM_REDEFINES_OBSERVER_C[] =
+    "#include \"sum.h\"\n#include <stdint.h>\n"
+    "void observed_int_equal(uintmax_t a, uintmax_t b, const char *f, int l);\n"
+    "void observed_int_equal(uintmax_t a, uintmax_t b, const char *f, int l)"
+    " { (void)a; (void)b; (void)f; (void)l; }\n"
+    "int sum_to(int n) { return n * (n + 1) / 2; }\n";
+static const char SUM_BUGGY_C[] =
+    "#include \"sum.h\"\nint sum_to(int n) { return n <= 10 ? n * (n + 1) / 2 : 0; }\n";
+
 /* run_shell, and the command must succeed. */
 static ShellResult shell_ok(const char *dir, const char *fmt, ...)
 {
@@ -146,7 +219,7 @@ static int set_up_tree(void **state)
     /* tools/: the scripts the Makefile calls, and time_limit of its programs */
     r = shell_ok(NULL, "cp -R Makefile common %s/ && cp tools/*.sh tools/*.awk %s/tools/ && "
                        "cp -R tools/autograder %s/tools/ && cp -R tests/support %s/tests/ && "
-                       "cp tools/time_limit.c %s/tools/", tree, tree, tree, tree, tree);
+                       "cp tools/time_limit.c tools/judge.c %s/tools/", tree, tree, tree, tree, tree);
     shell_result_free(&r);
     write_text(path_join(tree, "lessons/09_fake/fake.h"), FAKE_H);
     write_text(path_join(tree, "lessons/09_fake/fake.c"), FAKE_C);
@@ -155,6 +228,13 @@ static int set_up_tree(void **state)
     write_text(path_join(tree, "tests/09_fake/test_fake.c"), TEST_FAKE_C);
     write_text(path_join(tree, "tests/09_fake/test_other.c"), TEST_OTHER_C);
     write_text(path_join(tree, "tests/09_fake/points.txt"), POINTS);
+    r = shell_ok(NULL, "mkdir -p %s/lessons/06_sum %s/tests/06_sum", tree, tree);
+    shell_result_free(&r);
+    write_text(path_join(tree, "lessons/06_sum/sum.h"), SUM_H);
+    write_text(path_join(tree, "lessons/06_sum/sum.c"), SUM_C);
+    write_text(path_join(tree, "lessons/06_sum/main.c"), SUM_MAIN_C);
+    write_text(path_join(tree, "tests/06_sum/test_sum.c"), TEST_SUM_C);
+    write_text(path_join(tree, "tests/06_sum/points.txt"), SUM_POINTS);
     r = shell_ok(tree, "make -j2 OPT=-O0 all build/tests/09_fake/test_fake build/tests/09_fake/test_other");
     shell_result_free(&r);
     return 0;
@@ -166,6 +246,7 @@ static int restore_tree(void **state)
     (void)state;
     write_text(path_join(tree, "lessons/09_fake/fake.c"), FAKE_C);
     write_text(path_join(tree, "tests/09_fake/points.txt"), POINTS);
+    write_text(path_join(tree, "lessons/06_sum/sum.c"), SUM_C);
     remove(path_join(tree, "tests/09_fake/notes.txt"));
     return 0;
 }
@@ -462,6 +543,68 @@ static const char FORGED_C[] =
     "    fflush(stdout);\n"
     "    _exit(a + b == a + b ? 0 : 1);\n}\n";
 
+/* ---- a lesson judged against the teacher's record ---- */
+
+/* make grade LESSON=06 REFERENCE=...: its score line, "06_sum: x/5". */
+static void expect_judged_score(const char *sum_c, const char *score)
+{
+    write_text(path_join(tree, "lessons/06_sum/sum.c"), sum_c);
+    ShellResult r = run_shell(tree, SHELL_TIMEOUT,
+                              "make -j2 OPT=-O0 grade LESSON=06 TIME_LIMIT=5 REFERENCE=build/ref");
+    write_text(path_join(tree, "lessons/06_sum/sum.c"), SUM_C);
+    char want[64];
+    snprintf(want, sizeof want, "06_sum: %s", score);
+    if (r.status != 0 || !strstr(r.output, want))
+        fail_msg("want %s (status %d):\n%s", want, r.status, r.output);
+    shell_result_free(&r);
+}
+
+/* The teacher's record made once, then each submission judged against it:
+ * the solution scores all, the stub what needs no work, a bug what it gets
+ * right, and no forgery more than the stub. */
+static void a_judged_lesson_cannot_be_forged(void **state)
+{
+    (void)state;
+    ShellResult r = shell_ok(tree, "make -j2 OPT=-O0 grade-reference LESSON=06 REFERENCE=build/ref");
+    if (!strstr(r.output, "06_sum: 5/5"))
+        fail_msg("the teacher's solution should score 5/5 while recorded:\n%s", r.output);
+    shell_result_free(&r);
+    expect_judged_score(SUM_C, "5/5");
+    static const char STUB_C[] = "#include \"sum.h\"\nint sum_to(int n) { (void)n; return 0; }\n";
+    expect_judged_score(STUB_C, "0/5");
+    expect_judged_score(SUM_BUGGY_C, "3/5");
+    expect_judged_score(SUM_NEUTERS_CMOCKA_C, "0/5");
+    expect_judged_score(SUM_WRITES_RECORD_C, "0/5");
+    expect_judged_score(SUM_REDEFINES_OBSERVER_C, "0/5");
+
+    /* The judge's words reach the student. */
+    write_text(path_join(tree, "lessons/06_sum/sum.c"), SUM_BUGGY_C);
+    r = shell_ok(tree, "make -j2 OPT=-O0 grade LESSON=06 TIME_LIMIT=5 REFERENCE=build/ref");
+    write_text(path_join(tree, "lessons/06_sum/sum.c"), SUM_C);
+    shell_result_free(&r);
+    JsonValue v = read_results();
+    const JsonValue *tests = field(&v, "tests", JSON_ARRAY);
+    bool said = false;
+    for (size_t i = 0; i < tests->count; i++) {
+        const JsonValue *out = json_get(&tests->items[i], "output");
+        said = said || (out && out->type == JSON_STRING &&
+                        strstr(out->string, "judge: failed: checks after the start found other "
+                                            "values than the teacher's solution's"));
+    }
+    json_free(&v);
+    if (!said)
+        fail_msg("no test's output has the judge's words on what differs");
+
+    /* A reference that is not the solution's is refused, and nothing recorded. */
+    write_text(path_join(tree, "lessons/06_sum/sum.c"), SUM_BUGGY_C);
+    r = run_shell(tree, SHELL_TIMEOUT, "make -j2 OPT=-O0 grade-reference LESSON=06 REFERENCE=build/ref2");
+    write_text(path_join(tree, "lessons/06_sum/sum.c"), SUM_C);
+    if (r.status == 0 || !strstr(r.output, "does not pass every test"))
+        fail_msg("recording a wrong solution should fail (status %d):\n%s", r.status, r.output);
+    shell_result_free(&r);
+    assert_false(file_exists(path_join(tree, "build/ref2/06_sum")));
+}
+
 /* Grades SUBMISSION (files to write under it: path, text, ...) with the zip
  * of make autograder, in a directory of Gradescope's layout; the score. */
 static double autograde(const char *name, const char *const *files, double *seconds)
@@ -583,6 +726,7 @@ int main(void)
         cmocka_unit_test_teardown(autograder_grades_the_submission_only_and_cannot_be_forged,
                                   restore_tree),
         cmocka_unit_test_teardown(classroom_config_has_one_test_per_pointed_test, restore_tree),
+        cmocka_unit_test_teardown(a_judged_lesson_cannot_be_forged, restore_tree),
     };
     return cmocka_run_group_tests_name("tools: make grade and make handout on a made-up lesson",
                                        tests, set_up_tree, NULL);
