@@ -12,8 +12,13 @@
 #   3. the same handout with the test framework's checks neutered
 #      (tests/grading/neutered_checks.c: every check records what it saw but
 #      none fails), judged against them: it must score no more than 2.
-# Prints one line a lesson and exits 1 if a lesson's neutered handout scores
-# more than its untouched one, or its records cannot be made.
+# Then, once:
+#   4. lesson 02's solution with a debug print in its depth test, one line
+#      a fragment: it must score full marks, its output cut short;
+#   5. every lesson's solution judged while another process keeps every core
+#      busy, as many tests at a time as there are cores: full marks.
+# Prints a table and exits 1 if any of these does not hold, or the records
+# cannot be made.
 set -u
 prog=grade-check
 build=build
@@ -95,4 +100,58 @@ for l in "$@"; do
     cp -R "lessons/$l" "$copy/lessons/$l"
 done
 [ "$status" -eq 0 ] && echo "$prog: no neutered handout scores more than the untouched one"
+
+# 4. A correct solution that prints a line for every fragment (lesson 02's
+# depth test, to stderr): full marks, its output cut short.
+case " $* " in *" 02_zbuffer "*)
+    l=02_zbuffer
+    f="$copy/lessons/$l/raster.c"
+    awk '{ print } /bool passed = d < stored;/ && !done {
+             print "    fprintf(stderr, \"fragment %zu face %d d %g\\n\", i, face, (double)d);"; done = 1 }
+         END { if (!done) exit 1 }' "lessons/$l/raster.c" >"$f.tmp" &&
+        { echo '#include <stdio.h>'; cat "$f.tmp"; } >"$f" && rm -f "$f.tmp" ||
+        { echo "$prog: error: no place for a debug print in lessons/$l/raster.c" >&2; exit 1; }
+    (
+        cd "$copy" || exit 1
+        make --no-print-directory -k grade-build LESSON=02 GRADE_WARNINGS_SHOWN=1 \
+            >"$work/debug.$l.build.log" 2>&1
+        GRADE_TOOLS="$abs_build/tools" sh tools/grade.sh --build build --reference "$records" "$l" \
+            >"$work/debug.$l.log" 2>&1
+    )
+    rm -rf "$copy/lessons/$l"
+    cp -R "lessons/$l" "$copy/lessons/$l"
+    teacher=$(score_of "$work/reference.$l.log" "$l")
+    debug=$(score_of "$work/debug.$l.log" "$l")
+    cut=$(grep -l 'more bytes of output: cut at' "$copy"/build/grade/$l/run/*.log 2>/dev/null | wc -l)
+    echo "$prog: $l with a debug print per fragment: ${debug:-?} (the solution: $teacher), $cut logs cut short"
+    if [ "$debug" != "$teacher" ] || [ "$cut" -eq 0 ]; then
+        echo "$prog: error: a correct solution with a debug print lost points (or no log was cut):" >&2
+        grep '^  FAIL' "$work/debug.$l.log" | grep -v ' 0/0 ' >&2
+        status=1
+    fi ;;
+esac
+
+# 5. The teacher's solution of every lesson, judged while every core is busy
+# with another process, as many tests at a time as there are cores: full marks.
+cores=$(nproc 2>/dev/null || echo 2)
+hogs=""
+i=0
+while [ "$i" -lt "$cores" ]; do
+    sh -c 'while :; do :; done' &
+    hogs="$hogs $!"
+    i=$((i + 1))
+done
+trap 'kill $hogs 2>/dev/null' EXIT
+GRADE_JOBS=$cores sh tools/grade.sh --build "$build" --reference "$records" "$@" >"$work/busy.log" 2>&1
+kill $hogs 2>/dev/null
+trap - EXIT
+for l in "$@"; do
+    teacher=$(score_of "$work/reference.$l.log" "$l")
+    busy=$(score_of "$work/busy.log" "$l")
+    if [ "$busy" != "$teacher" ]; then
+        echo "$prog: error: $l scored ${busy:-?} on a busy machine, the solution scores $teacher" >&2
+        status=1
+    fi
+done
+[ "$status" -eq 0 ] && echo "$prog: on a machine kept busy on all $cores cores, every lesson's solution scores full marks"
 exit "$status"

@@ -13,6 +13,10 @@
 #
 # Every test runs alone, in a process of its own (TEST_FILTER), under the
 # time limit: a crash, an exit or a hang costs the points of that test only.
+# The limit is CPU time (TIME_LIMIT seconds, 10 by default, or five times
+# what the teacher's solution took when judged against a reference), so that
+# a busy machine costs no points; three times as much wall-clock time stops a
+# test that waits for ever.
 # Whether it passed is never read from what it printed: the process runs the
 # student's code, which can print anything. It is the exit status and a line
 # with a number drawn at random for that run, which only the test framework
@@ -127,6 +131,11 @@ GRADE_PRIVATE=$(mktemp -d "${TMPDIR:-/tmp}/grade.XXXXXXXXXX") || { echo "$prog: 
 trap 'rm -rf "$GRADE_PRIVATE"' EXIT
 export GRADE_DEADLINE GRADE_PRIVATE GRADE_LIMIT="$limit" GRADE_BUILD="$build" GRADE_OUTPUT="$build/test-output/grade"
 export GRADE_MODE="$mode" GRADE_RECORDS="$records" GRADE_JUDGE
+GRADE_LOG_MAX=${GRADE_LOG_MAX:-1048576}
+case $GRADE_LOG_MAX in
+    ''|*[!0-9]*|0) echo "$prog: error: GRADE_LOG_MAX=$GRADE_LOG_MAX: want a number of bytes" >&2; exit 2 ;;
+esac
+export GRADE_LOG_MAX
 export GRADE_SANDBOX="${GRADE_SANDBOX:-}" GRADE_SANDBOX_PREPARE="${GRADE_SANDBOX_PREPARE:-}"
 export GRADE_SANDBOX_CLEANUP="${GRADE_SANDBOX_CLEANUP:-}"
 export GRADE_OWNER_ARG="${GRADE_OWNER:+--owner $GRADE_OWNER}"
@@ -136,7 +145,8 @@ export BIN_DIR="$build/bin" TOOL_DIR="$build/tools" TEST_OUTPUT="$build/test-out
 # What a status of time_limit says about a run that did not finish a test.
 why_unfinished() { # why_unfinished STATUS
     case $1 in
-        124) echo "did not finish within $limit s: an endless loop? (TIME_LIMIT=$limit)" ;;
+        124) echo "did not finish in time: an endless wait?" ;;
+        152) echo "used more than its CPU time: an endless loop? (TIME_LIMIT=$limit)" ;;
         127|125) echo "could not be run (status $1)" ;;
         *) if [ "$1" -gt 128 ]; then
                sig=$(($1 - 128))
@@ -296,10 +306,20 @@ for lesson in "$@"; do
     [ -s "$ldir/jobs" ] && xargs -n 2 -P "$jobs" sh -c '
         bin=$1 name=$2
         out="$GRADE_LDIR/run/$bin.$name"
+        # CPU seconds: TIME_LIMIT, or five times what the teacher'"'"'s
+        # solution used, if that is more. Wall-clock seconds: three times
+        # that, only to stop a test that waits for ever. Neither past the
+        # deadline of the whole grading.
         lim=$GRADE_LIMIT
+        if [ "$GRADE_MODE" = reference ]; then
+            ref=$(cat "$GRADE_RECORDS/$GRADE_LESSON/$bin.$name.cpu" 2>/dev/null)
+            lim=$(awk -v l="$lim" -v r="${ref:-0}" '"'"'BEGIN { r = int(5 * r + 0.999); print (r > l ? r : l) }'"'"')
+        fi
+        wall=$((3 * lim))
         if [ -n "$GRADE_DEADLINE" ]; then
             left=$((GRADE_DEADLINE - $(date +%s)))
             [ "$left" -lt "$lim" ] && lim=$left
+            [ "$left" -lt "$wall" ] && wall=$left
         fi
         if [ "$lim" -le 0 ]; then
             : >"$out.log"; echo "budget 0" >"$out.verdict"; exit 0
@@ -314,15 +334,19 @@ for lesson in "$@"; do
         mkdir -p "$tout"
         [ -z "$GRADE_SANDBOX_PREPARE" ] || $GRADE_SANDBOX_PREPARE "$tout"
         exe="$GRADE_BUILD/tests/$GRADE_LESSON/$bin"
+        # Its output, at most GRADE_LOG_MAX bytes of it: time_limit reads the
+        # rest and throws it away (a debug print per fragment writes gigabytes).
         if [ "$GRADE_MODE" = self ]; then
             env -u UPDATE_EXPECTED TEST_OUTPUT="$tout" \
                 TEST_FILTER="$name" GRADE_NONCE_FILE="$d/n" GRADE_RESULT_FILE="$d/r" \
-                "$0" "$lim" $GRADE_SANDBOX "$exe" >"$out.log" 2>&1 </dev/null
+                "$0" --cpu "$lim" --output "$out.log" --output-max "$GRADE_LOG_MAX" "$wall" \
+                $GRADE_SANDBOX "$exe" </dev/null
             st=$?
         else
             # Observed: what its checks saw goes to descriptor 3 (observe.h).
             env -u UPDATE_EXPECTED TEST_OUTPUT="$tout" TEST_FILTER="$name" GRADE_OBSERVE_FD=3 \
-                "$0" "$lim" $GRADE_SANDBOX "$exe" >"$out.log" 2>&1 </dev/null 3>"$out.obs"
+                "$0" --cpu "$lim" --cpu-out "$out.cpu" --output "$out.log" \
+                --output-max "$GRADE_LOG_MAX" "$wall" $GRADE_SANDBOX "$exe" </dev/null 3>"$out.obs"
             st=$?
         fi
         [ -z "$GRADE_SANDBOX_CLEANUP" ] || $GRADE_SANDBOX_CLEANUP
@@ -339,7 +363,8 @@ for lesson in "$@"; do
             # tests/expected/), it must pass to become the record.
             if [ "$st" -eq 0 ] && "$GRADE_JUDGE" "$out.obs" "$out.obs" "$tout" >>"$out.log"; then
                 v=pass
-                cp "$out.obs" "$GRADE_RECORDS/$GRADE_LESSON.new/$bin.$name.obs" || v=fail
+                cp "$out.obs" "$GRADE_RECORDS/$GRADE_LESSON.new/$bin.$name.obs" &&
+                    cp "$out.cpu" "$GRADE_RECORDS/$GRADE_LESSON.new/$bin.$name.cpu" || v=fail
             elif [ "$st" -eq 0 ] || grep -q "^E " "$out.obs"; then v=fail
             else v=unfinished; fi ;;
         reference)
@@ -351,13 +376,14 @@ for lesson in "$@"; do
             elif [ "$st" -eq 0 ] || [ "$j" -ne 1 ] || grep -q "^E " "$out.obs" 2>/dev/null; then v=fail
             else v=unfinished; fi ;;
         esac
-        echo "$v $st $lim" >"$out.verdict"' "$time_limit" <"$ldir/jobs"
+        echo "$v $st $lim $wall" >"$out.verdict"' "$time_limit" <"$ldir/jobs"
 
     # The verdicts: a test passes if a program that has it passed it.
     : >"$ldir/results"     # test <tab> pass|fail|crash <tab> binary
     while read -r bin; do mkdir -p "$ldir/out/$bin"; done <"$ldir/bins"
     while read -r bin name; do
-        read -r v st lim <"$ldir/run/$bin.$name.verdict" 2>/dev/null || { v=unfinished; st=127; lim=$limit; }
+        read -r v st lim wall <"$ldir/run/$bin.$name.verdict" 2>/dev/null ||
+            { v=unfinished; st=127; lim=$limit; wall=$((3 * limit)); }
         log="$ldir/run/$bin.$name.log"
         if grep -q "^$name	pass	" "$ldir/results"; then continue; fi
         # Bytes that are not plain text (and are not valid UTF-8 in JSON) as "?".
@@ -379,7 +405,9 @@ for lesson in "$@"; do
                if [ "$st" -eq 0 ]; then
                    echo "the test program ended before this test finished (exit() or _exit() in the code?)" >>"$ldir/out/$bin/$name.out"
                elif [ "$st" -eq 124 ]; then
-                   echo "did not finish within $lim s: an endless loop? (TIME_LIMIT=$limit)" >>"$ldir/out/$bin/$name.out"
+                   echo "did not finish within $wall s, waiting rather than computing: a read or a wait that never ends?" >>"$ldir/out/$bin/$name.out"
+               elif [ "$st" -eq 152 ]; then
+                   echo "used more than $lim s of CPU time: an endless loop? (TIME_LIMIT=$limit)" >>"$ldir/out/$bin/$name.out"
                else
                    why_unfinished "$st" >>"$ldir/out/$bin/$name.out"
                fi ;;

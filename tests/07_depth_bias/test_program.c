@@ -73,6 +73,9 @@ static DecalTotals totals_of(const char *out)
     if (!line || sscanf(line, "  decals: win %ld of their %ld pixels (%*f), and %ld pixels",
                         &t.won, &t.pixels, &t.beyond) != 3)
         fail_msg("no decals line in:\n%s", out);
+    observe_value("decal pixels won", t.won);
+    observe_value("decal pixels", t.pixels);
+    observe_value("pixels won beyond", t.beyond);
     return t;
 }
 
@@ -85,6 +88,7 @@ static double share_of(const char *out, int face)
     double share;
     if (!at || sscanf(at + strlen(key), "%lf", &share) != 1)
         fail_msg("no share for face %d in:\n%s", face, out);
+    observe_number("share", share);
     return share;
 }
 

@@ -98,6 +98,7 @@ static inline uint64_t observe_picture_hash(int width, int height, const uint8_t
  * the data itself, so that the judge sees what the test saw.
  *   observe_data(what, pointer, bytes)       bytes that must be equal
  *   observe_value(what, integer)             an integer that must be equal
+ *   observe_number(what, number)             a double that must be equal
  *   observe_near(actual, expected, tolerance) a number within tolerance
  *   observe_target(t)                         a Target's coverage: its face
  *                                             and overdraw buffers, equal
@@ -106,6 +107,7 @@ static inline uint64_t observe_picture_hash(int width, int height, const uint8_t
  *                                             farthest of them (NaN: infinitely far) */
 #define observe_data(what, p, n) observe_exact_data(__FILE__, __LINE__, (what), (p), (n))
 #define observe_value(what, v) observe_exact(__FILE__, __LINE__, "%s %lld", (what), (long long)(v))
+#define observe_number(what, v) observe_exact(__FILE__, __LINE__, "%s %a", (what), (double)(v))
 #define observe_near(a, e, tol) observe_close(__FILE__, __LINE__, (a), (e), (tol))
 #define observe_target(t) observe_target_at(__FILE__, __LINE__, (t))
 #define observe_worst(v, n, e, tol) observe_worst_at(__FILE__, __LINE__, (v), (n), (e), (tol))

@@ -27,14 +27,16 @@ static char *read_all(FILE *fp)
 {
     size_t cap = 4096, len = 0, got;
     char *buf = malloc(cap);
-    assert_non_null(buf);
+    if (!buf)
+        fail_msg("out of memory");
     rewind(fp);
     while ((got = fread(buf + len, 1, cap - len - 1, fp)) > 0) {
         len += got;
         if (len + 1 == cap) {
             cap *= 2;
             buf = realloc(buf, cap);
-            assert_non_null(buf);
+            if (!buf)
+        fail_msg("out of memory");
         }
     }
     buf[len] = '\0';

@@ -6,7 +6,9 @@
  *   way, so that one broken test costs only its own points.
  * - stdout is unbuffered: cmocka prints a test's name and result on stdout and
  *   its failure messages on stderr. When both go to one log (make test, make
- *   grade), each message then lands under the test that printed it.
+ *   grade), each message then lands under the test that printed it. Observed
+ *   for a grade (observe.h), stdout and stderr are written in blocks instead:
+ *   a student's debug print per fragment then costs little.
  * - UPDATE_EXPECTED: while grading it is ignored altogether, whatever the
  *   code under test sets (test_update_expected()).
  *
@@ -83,7 +85,6 @@ __attribute__((constructor)) static void before_main(void)
     const char *filter = getenv("TEST_FILTER");
     if (filter && *filter)
         cmocka_set_test_filter(filter);
-    setvbuf(stdout, NULL, _IONBF, 0);
 
     const char *update = getenv("UPDATE_EXPECTED");
     update_expected_asked = update && strcmp(update, "1") == 0;
@@ -108,6 +109,15 @@ __attribute__((constructor)) static void before_main(void)
         }
     }
     unsetenv("GRADE_OBSERVE_FD");
+    /* Unbuffered, so that each message lands under its test in a log of
+     * stdout and stderr together; observed for a grade, in blocks, so that a
+     * debug print per fragment costs little. */
+    if (observing()) {
+        setvbuf(stdout, NULL, _IOFBF, 1 << 16);
+        setvbuf(stderr, NULL, _IOFBF, 1 << 16);
+    } else {
+        setvbuf(stdout, NULL, _IONBF, 0);
+    }
     if (grading)
         unsetenv("UPDATE_EXPECTED");
 }

@@ -53,7 +53,7 @@ static const char MAIN_C[] = "#include \"fake.h\"\nint main(void) { return fake_
 /* The tests, in the order cmocka runs them. The abort kills the whole test
  * program, so make grade must run the three tests after it on their own.
  * hangs spins as a student's endless loop does, at the lowest priority
- * (nice 19): the wall-clock time limit stops it all the same, and the tests
+ * (nice 19): the CPU time limit stops it all the same, and the tests
  * that make test runs beside it keep the cores. */
 static const char TEST_FAKE_C[] =
     "#define _XOPEN_SOURCE 700 /* nice() */\n"
@@ -333,7 +333,7 @@ static void each_failure_costs_only_its_own_points(void **state)
     /* The abort and the hang cost their own test, not those after them. */
     expect_test(&v, "aborts", 0, 1, "crashed: killed by SIGABRT");
     expect_test(&v, "after_the_abort", 1, 1, NULL);
-    expect_test(&v, "hangs", 0, 1, "did not finish within 1 s");
+    expect_test(&v, "hangs", 0, 1, "used more than 1 s of CPU time");
     expect_test(&v, "after_the_hang", 1, 1, NULL);
     expect_test(&v, "listed_but_missing", 0, 1, "did not run");
     /* Run and shown, but worth nothing: it is not in points.txt. */

@@ -51,6 +51,8 @@ typedef struct {
     const char *file;     /* in the lesson directory */
     const char *from, *to; /* the edit: from must occur exactly once */
     bool every_run;           /* made in every run; the others with TEST_ALL_MISTAKES=1 */
+    const char *page_says;    /* NULL, or what docs/teaching.md says of its score: a format
+                                 with the score and the full marks, "... %g of %g" */
     const char *caught_by[48]; /* exactly the tests that fail, NULL-terminated */
 } Mistake;
 
@@ -66,7 +68,7 @@ static const Mistake MISTAKES[] = {
     {"01_ybuffer", "the inverted test", "ybuffer.h",
      "return y > stored;",
      "return y < stored;",
-     true,
+     true, NULL,
      {"all_six_orders_agree_except_the_tie",
       "default_run_prints_the_summary_and_writes_three_pictures",
       "default_render_has_the_derived_runs",
@@ -87,7 +89,7 @@ static const Mistake MISTAKES[] = {
     {"01_ybuffer", "the wrong initial value", "ybuffer.c",
      "yb->y[x] = YBUFFER_CLEARED;",
      "yb->y[x] = 0;",
-     true,
+     true, NULL,
      {"default_run_prints_the_summary_and_writes_three_pictures",
       "segment_outside_the_screen_wins_nothing",
       "vertical_segment_is_one_column_at_its_nearest_y",
@@ -96,7 +98,7 @@ static const Mistake MISTAKES[] = {
     {"02_zbuffer", "the inverted test", "raster.c",
      "bool passed = d < stored;",
      "bool passed = d > stored;",
-     true,
+     true, NULL,
      {"clear_to_zero_draws_nothing",
       "clear_zero_picture_is_background_only",
       "default_render_matches_expected",
@@ -121,7 +123,7 @@ static const Mistake MISTAKES[] = {
     {"02_zbuffer", "the wrong initial value", "raster.c",
      "t->depth[i] = INFINITY;",
      "t->depth[i] = 0.0f;",
-     false,
+     false, NULL,
      {"default_render_matches_expected",
       "depth_is_interpolated_linearly_at_chosen_pixels",
       "depth_of_triangles3_is_linear_on_the_screen",
@@ -144,7 +146,7 @@ static const Mistake MISTAKES[] = {
     {"02_zbuffer", "one buffer per object", "raster.c",
      "bool passed = d < stored;",
      "bool passed = d < stored || t->face[i] != face; /* as if each face had its own buffer */",
-     false,
+     false, NULL,
      {"clear_to_zero_draws_nothing",
       "clear_zero_picture_is_background_only",
       "default_render_matches_expected",
@@ -160,7 +162,7 @@ static const Mistake MISTAKES[] = {
     {"02_zbuffer", "holes from float edges", "coverage.c",
      "return e > 0 || (e == 0 && top_left);",
      "(void)top_left;\n    return e > 0;",
-     false,
+     false, NULL,
      {"every_scene_matches_expected",
       "fan_of_thin_triangles_covers_once",
       "fill_back_to_front_bench_draws_what_render_faces_draws",
@@ -176,7 +178,7 @@ static const Mistake MISTAKES[] = {
     {"03_perspective_z", "linear z under perspective", "raster.c",
      "return 1 / inv_d;",
      "(void)inv_d;\n    return w.w0 / inv_d0 + w.w1 / inv_d1 + w.w2 / inv_d2;",
-     true,
+     true, NULL,
      {"compare_naive_marks_the_pixels_the_naive_rule_gets_wrong",
       "default_render_matches_expected",
       "depth_out_is_where_the_ray_meets_the_plane",
@@ -190,7 +192,7 @@ static const Mistake MISTAKES[] = {
     {"04_scanline_inverse_z", "the inverted test", "depth_buffer.c",
      "bool passed = inv_d > stored;",
      "bool passed = inv_d < stored;",
-     true,
+     true, "`inv_d < stored` scores %g of %g",
      {"an_obj_mesh_agrees_with_lesson_03",
       "ascii_and_trace_speak_of_inverse_depth",
       "clear_to_zero_loses_to_a_far_surface",
@@ -219,7 +221,7 @@ static const Mistake MISTAKES[] = {
     {"04_scanline_inverse_z", "a tie to the later fragment", "depth_buffer.c",
      "bool passed = inv_d > stored;",
      "bool passed = inv_d >= stored;",
-     true,
+     true, "`>=` scores %g of %g",
      {"equal_depth_keeps_the_first_face",
       "equal_depth_keeps_the_first_fragment",
       "every_built_in_scene_agrees_with_lesson_03",
@@ -227,7 +229,7 @@ static const Mistake MISTAKES[] = {
     {"04_scanline_inverse_z", "the wrong initial value", "depth_buffer.h",
      "#define CLEARED_INV_DEPTH 0.0f",
      "#define CLEARED_INV_DEPTH INFINITY",
-     false,
+     false, NULL,
      {"an_obj_mesh_agrees_with_lesson_03",
       "ascii_and_trace_speak_of_inverse_depth",
       "clear_to_zero_loses_to_a_far_surface",
@@ -755,6 +757,14 @@ static void expect_tests_fail_with_hints(const char *h, const char *lesson)
         fail_msg("tests/%s/points.txt gives no test any points", lesson);
     print_message("%s: the %d tests with points (of %d in points.txt) all fail on the untouched "
                   "handout: all %g points come from them\n", lesson, n, listed, points);
+    /* The points table of docs/teaching.md says these numbers. */
+    char row[256];
+    snprintf(row, sizeof row, "| %.2s | %d | %d | %g |\n", lesson, listed, n, points);
+    char *guide = read_text("docs/teaching.md");
+    bool said = strstr(guide, row) != NULL;
+    free(guide);
+    if (!said)
+        fail_msg("docs/teaching.md's points table should have the row\n%s", row);
     shell_result_free(&r);
 }
 
@@ -825,6 +835,15 @@ static void expect_mistake_caught(const char *h, const char *build, const Mistak
             fail_msg("%s: no test %s in lesson %s", m->mistake, m->caught_by[k], m->lesson);
     if (lost <= 0 || g.score != full->score - lost)
         fail_msg("%s: the score is %g, want %g - %g", m->mistake, g.score, full->score, lost);
+    if (m->page_says) {
+        char said[256];
+        snprintf(said, sizeof said, m->page_says, g.score, full->score);
+        char *guide = read_text("docs/teaching.md");
+        bool found = strstr(guide, said) != NULL;
+        free(guide);
+        if (!found)
+            fail_msg("%s: docs/teaching.md should say \"%s\"", m->mistake, said);
+    }
     json_free(&g.json);
 }
 

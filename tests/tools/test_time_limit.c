@@ -81,6 +81,68 @@ static void crash_is_128_plus_the_signal(void **state)
     run_result_free(&r);
 }
 
+/* --cpu: a program that computes for ever is stopped by its CPU time (152,
+ * 128 + SIGXCPU) long before the wall-clock limit; one that waits uses no
+ * CPU and is stopped by the wall clock (124). --cpu-out says what it used. */
+static void cpu_time_limit_stops_computing_not_waiting(void **state)
+{
+    (void)state;
+    struct timespec start;
+    clock_gettime(CLOCK_MONOTONIC, &start);
+    const char *cpu_out = path_join(test_dir("time_limit_cpu"), "cpu.txt");
+    const char *spin[] = {"--cpu", "1", "--cpu-out", cpu_out, "30", "sh", "-c",
+                          "while :; do :; done", NULL};
+    RunResult r = run_tool("time_limit", spin);
+    assert_int_equal(r.status, 152);
+    if (seconds_since(&start) > 20.0)
+        fail_msg("a spinning program under --cpu 1 ran %.1f s", seconds_since(&start));
+    run_result_free(&r);
+    char *used = read_text(cpu_out);
+    double seconds = strtod(used, NULL);
+    free(used);
+    if (!(seconds >= 0.9 && seconds < 3.0))
+        fail_msg("--cpu-out says %.3f s for a program stopped at 1 s of CPU time", seconds);
+
+    const char *sleep_args[] = {"--cpu", "1", "0.5", "sleep", "30", NULL};
+    r = run_tool("time_limit", sleep_args);
+    assert_int_equal(r.status, 124);
+    run_result_free(&r);
+}
+
+/* --output: stdout and stderr in a file, at most the bytes asked, with a note
+ * of how much more came; and a process left behind holding the pipe does
+ * not keep time_limit waiting. */
+static void output_is_kept_to_its_cap(void **state)
+{
+    (void)state;
+    const char *log = path_join(test_dir("time_limit_output"), "log.txt");
+    const char *args[] = {"--output", log, "--output-max", "100", "10", "sh", "-c",
+                          "echo first; echo second >&2; yes 0123456789 | head -c 1000000; exit 3",
+                          NULL};
+    RunResult r = run_tool("time_limit", args);
+    assert_int_equal(r.status, 3);
+    run_result_free(&r);
+    char *text = read_text(log);
+    if (strncmp(text, "first\nsecond\n", 13) != 0 ||
+        !strstr(text, "\n[... 999913 more bytes of output: cut at 100 bytes]\n"))
+        fail_msg("the capped output is:\n%s", text);
+    free(text);
+
+    struct timespec start;
+    clock_gettime(CLOCK_MONOTONIC, &start);
+    const char *escape[] = {"--output", log, "10", "sh", "-c",
+                            "setsid sh -c 'sleep 5; echo late' & echo now", NULL};
+    r = run_tool("time_limit", escape);
+    assert_int_equal(r.status, 0);
+    if (seconds_since(&start) > 3.0)
+        fail_msg("time_limit waited %.1f s for a process that holds its pipe",
+                 seconds_since(&start));
+    run_result_free(&r);
+    text = read_text(log);
+    assert_string_equal(text, "now\n");
+    free(text);
+}
+
 static void missing_program_is_127(void **state)
 {
     (void)state;
@@ -105,8 +167,19 @@ static void bad_limit_is_125_with_usage(void **state)
     const char *args[] = {"5", NULL};
     RunResult r = run_tool("time_limit", args);
     assert_int_equal(r.status, 125);
-    assert_non_null(strstr(r.err, "usage: time_limit SECONDS PROGRAM"));
+    assert_non_null(strstr(r.err, "usage: time_limit [--cpu CPU_SECONDS]"));
     run_result_free(&r);
+    const char *const bad_options[][3] = {{"--cpu", "0", "--cpu wants a number of seconds"},
+                                         {"--output-max", "0", "--output-max wants a number"},
+                                         {"--frobnicate", "1", "unknown option"}};
+    for (size_t i = 0; i < sizeof bad_options / sizeof bad_options[0]; i++) {
+        const char *opt_args[] = {bad_options[i][0], bad_options[i][1], "5", "true", NULL};
+        r = run_tool("time_limit", opt_args);
+        if (r.status != 125 || !strstr(r.err, bad_options[i][2]))
+            fail_msg("time_limit %s %s: status %d, stderr %s", bad_options[i][0],
+                     bad_options[i][1], r.status, r.err);
+        run_result_free(&r);
+    }
 }
 
 int main(void)
@@ -118,6 +191,8 @@ int main(void)
         cmocka_unit_test(crash_is_128_plus_the_signal),
         cmocka_unit_test(missing_program_is_127),
         cmocka_unit_test(bad_limit_is_125_with_usage),
+        cmocka_unit_test(cpu_time_limit_stops_computing_not_waiting),
+        cmocka_unit_test(output_is_kept_to_its_cap),
     };
     return cmocka_run_group_tests_name("tools: time_limit", tests, NULL, NULL);
 }
