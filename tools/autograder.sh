@@ -7,8 +7,11 @@
 # (tools/autograder/, with the lesson filled in), and the series beside
 # them, which Gradescope unpacks into /autograder/source. autograder/taught.txt
 # lists the lesson's files that hold solution regions: those, and only those,
-# run_autograder takes from the submission. The teacher's material and the
-# checks of the tools stay out; the tests, expected images and points go in.
+# run_autograder takes from the submission. In: the lesson and the earlier
+# ones, their tests, expected images and points, the build machinery. Out:
+# later lessons and their tests (they hold what this lesson teaches), the
+# pages, the teacher's material and the checks of the tools. setup.sh records
+# the solution's results and then makes the unpacked zip root's alone.
 set -eu
 prog=autograder
 build=build
@@ -35,15 +38,24 @@ out="$build/autograder"
 stage="$out/$name.stage"
 rm -rf "$stage"
 mkdir -p "$stage/autograder"
-for f in Makefile README.md common tools tests docs lessons; do
+for f in Makefile README.md common tools tests lessons; do
     [ -e "$f" ] && cp -R "$f" "$stage/"
 done
 rm -rf "$stage/tests/tools" "$stage/tests/gpu" "$stage/tests/grading" "$stage/tools/grade-check.sh" \
-    "$stage/docs/teaching.md" "$stage/tools/teacher"
+    "$stage/docs" "$stage/tools/teacher"
+# Later lessons, and their tests.
+n=${name%%_*}
+for d in lessons/[0-9][0-9]_*; do
+    l=${d#lessons/}
+    m=${l%%_*}
+    if [ "${m#0}" -gt "${n#0}" ]; then
+        rm -rf "$stage/lessons/$l" "$stage/tests/$l"
+    fi
+done
 (cd "lessons/$name" && grep -rlE 'SOLUTION BEGIN' . | sed 's|^\./||' | sort) >"$stage/autograder/taught.txt"
 [ -s "$stage/autograder/taught.txt" ] || { echo "$prog: error: lessons/$name has no solution region" >&2; exit 1; }
 sed "s/@LESSON@/$name/g" tools/autograder/run_autograder >"$stage/run_autograder"
-cp tools/autograder/setup.sh "$stage/setup.sh"
+sed "s/@LESSON@/$name/g" tools/autograder/setup.sh >"$stage/setup.sh"
 chmod +x "$stage/run_autograder" "$stage/setup.sh"
 rm -f "$out/$name.zip"
 (cd "$stage" && zip -qr "../$name.zip" .)

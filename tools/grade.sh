@@ -51,11 +51,11 @@
 # autograder does; docs/teaching.md):
 #   GRADE_DIR          where the grader keeps its files (default DIR/grade)
 #   GRADE_TOOLS        where time_limit and judge are (default DIR/tools)
-#   GRADE_SANDBOX      a command put before each test program (another user)
-#   GRADE_SANDBOX_PREPARE  a command given each test's output directory first
-#   GRADE_SANDBOX_CLEANUP  a command run after each test program (ends every
-#                      process the test started)
-#   GRADE_OWNER        the user id whose pictures the judge accepts
+#   GRADE_SANDBOX      a script (tools/autograder/sandbox.sh) that runs each
+#                      test program as an unprivileged user, one per slot of
+#                      GRADE_JOBS, gives it its output directory first, ends
+#                      every process of that user after, and names the user
+#                      whose pictures the judge accepts
 set -u
 
 prog=grade
@@ -136,9 +136,7 @@ case $GRADE_LOG_MAX in
     ''|*[!0-9]*|0) echo "$prog: error: GRADE_LOG_MAX=$GRADE_LOG_MAX: want a number of bytes" >&2; exit 2 ;;
 esac
 export GRADE_LOG_MAX
-export GRADE_SANDBOX="${GRADE_SANDBOX:-}" GRADE_SANDBOX_PREPARE="${GRADE_SANDBOX_PREPARE:-}"
-export GRADE_SANDBOX_CLEANUP="${GRADE_SANDBOX_CLEANUP:-}"
-export GRADE_OWNER_ARG="${GRADE_OWNER:+--owner $GRADE_OWNER}"
+export GRADE_SANDBOX="${GRADE_SANDBOX:-}"
 rm -rf "$GRADE_OUTPUT"
 export BIN_DIR="$build/bin" TOOL_DIR="$build/tools" TEST_OUTPUT="$build/test-output"
 
@@ -332,24 +330,43 @@ for lesson in "$@"; do
         tout="$GRADE_OUTPUT/$bin.$name"
         rm -rf "$tout"
         mkdir -p "$tout"
-        [ -z "$GRADE_SANDBOX_PREPARE" ] || $GRADE_SANDBOX_PREPARE "$tout"
         exe="$GRADE_BUILD/tests/$GRADE_LESSON/$bin"
+        if [ ! -x "$exe" ]; then
+            echo "its test program, $bin, did not build (the compiler'"'"'s messages are with the score)" >"$out.log"
+            echo "unfinished 127 $lim $wall" >"$out.verdict"
+            rm -rf "$d"
+            exit 0
+        fi
+        # In a sandbox: a slot of its own (at most GRADE_JOBS run at once, so
+        # one is free), whose user runs the test and owns its directory.
+        sandbox=""
+        owner=""
+        if [ -n "$GRADE_SANDBOX" ]; then
+            slot=0
+            while ! mkdir "$GRADE_PRIVATE/slot.$slot" 2>/dev/null; do slot=$((slot + 1)); done
+            sh "$GRADE_SANDBOX" prepare "$slot" "$tout"
+            sandbox="sh $GRADE_SANDBOX run $slot --"
+            owner="--owner $(sh "$GRADE_SANDBOX" uid "$slot")"
+        fi
         # Its output, at most GRADE_LOG_MAX bytes of it: time_limit reads the
         # rest and throws it away (a debug print per fragment writes gigabytes).
         if [ "$GRADE_MODE" = self ]; then
             env -u UPDATE_EXPECTED TEST_OUTPUT="$tout" \
                 TEST_FILTER="$name" GRADE_NONCE_FILE="$d/n" GRADE_RESULT_FILE="$d/r" \
                 "$0" --cpu "$lim" --output "$out.log" --output-max "$GRADE_LOG_MAX" "$wall" \
-                $GRADE_SANDBOX "$exe" </dev/null
+                $sandbox "$exe" </dev/null
             st=$?
         else
             # Observed: what its checks saw goes to descriptor 3 (observe.h).
             env -u UPDATE_EXPECTED TEST_OUTPUT="$tout" TEST_FILTER="$name" GRADE_OBSERVE_FD=3 \
                 "$0" --cpu "$lim" --cpu-out "$out.cpu" --output "$out.log" \
-                --output-max "$GRADE_LOG_MAX" "$wall" $GRADE_SANDBOX "$exe" </dev/null 3>"$out.obs"
+                --output-max "$GRADE_LOG_MAX" "$wall" $sandbox "$exe" </dev/null 3>"$out.obs"
             st=$?
         fi
-        [ -z "$GRADE_SANDBOX_CLEANUP" ] || $GRADE_SANDBOX_CLEANUP
+        if [ -n "$GRADE_SANDBOX" ]; then
+            sh "$GRADE_SANDBOX" cleanup "$slot"
+            rmdir "$GRADE_PRIVATE/slot.$slot"
+        fi
         r=$(cat "$d/r" 2>/dev/null)
         rm -rf "$d"
         case $GRADE_MODE in
@@ -369,7 +386,7 @@ for lesson in "$@"; do
             else v=unfinished; fi ;;
         reference)
             # The verdict is the judge'"'"'s alone: the record against the teacher'"'"'s.
-            "$GRADE_JUDGE" $GRADE_OWNER_ARG "$GRADE_RECORDS/$GRADE_LESSON/$bin.$name.obs" \
+            "$GRADE_JUDGE" $owner "$GRADE_RECORDS/$GRADE_LESSON/$bin.$name.obs" \
                 "$out.obs" "$tout" >>"$out.log"
             j=$?
             if [ "$j" -eq 0 ] && [ "$st" -eq 0 ]; then v=pass
@@ -450,7 +467,7 @@ for lesson in "$@"; do
             return s
         }
         function entry(name, score, max, status, out, vis) {
-            printf "%s    {\"name\": %s, \"score\": %s, \"max_score\": %s, \"status\": \"%s\", \"visibility\": \"%s\", \"output\": %s}",
+            printf "%s    {\"name\": %s, \"score\": %s, \"max_score\": %s, \"status\": \"%s\", \"visibility\": \"%s\", \"output_format\": \"text\", \"output\": %s}",
                 first ? "" : ",\n", json(lesson ": " name), score, max, status, vis, json(out) >> tests_json
             first = 0
         }
@@ -500,16 +517,27 @@ if [ -n "$only_test" ] && [ "$status" -eq 0 ]; then
     [ "$passed" = yes ] || status=1
 fi
 
-elapsed=$(($(date +%s) - start))
+# The whole run's seconds: GRADE_STARTED_AT (seconds since the epoch) when the
+# caller started earlier (the autograder, whose build comes first).
+case ${GRADE_STARTED_AT:-} in
+    ''|*[!0-9]*) began=$start ;;
+    *) began=$GRADE_STARTED_AT ;;
+esac
+elapsed=$(($(date +%s) - began))
 results="$gdir/results.json"
-awk -v score="$total" -v elapsed="$elapsed" -v summary="$summary" -v parts="$tests_json" -v compiler="$compiler" "$json_awk"'
+# GRADE_PREAMBLE=file: lines put first in the output (which files were graded).
+awk -v score="$total" -v elapsed="$elapsed" -v summary="$summary" -v parts="$tests_json" \
+    -v compiler="$compiler" -v preamble="${GRADE_PREAMBLE:-}" "$json_awk"'
     BEGIN {
         out = ""
+        if (preamble != "") while ((getline l < preamble) > 0) out = out l "\n"
         while ((getline l < summary) > 0) out = out l "\n"
         c = ""
         while ((getline l < compiler) > 0) c = c l "\n"
         if (c != "") out = out "\nThe compiler said (warnings do not cost points here, but read them):\n" c
         printf "{\n  \"score\": %s,\n  \"execution_time\": %d,\n  \"visibility\": \"visible\",\n", score, elapsed
+        # Plain text, so that a compiler message that names <stdio.h> shows as it is.
+        printf "  \"output_format\": \"text\",\n  \"test_output_format\": \"text\",\n"
         printf "  \"output\": %s,\n  \"tests\": [\n", json(out)
         while ((getline l < parts) > 0) print l
         printf "\n  ]\n}\n"

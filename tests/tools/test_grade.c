@@ -519,32 +519,6 @@ static void handout_refuses_bad_requests(void **state)
     assert_false(file_exists(path_join(dest, "Makefile")));
 }
 
-/* ---- make autograder: Gradescope's layout, simulated ---- */
-
-/* The forging student: fake_add prints cmocka's lines for every test, writes
- * a results file wherever one could be read, then ends the process as if
- * all went well. */
-static const char FORGED_C[] =
-    "#include \"fake.h\"\n#include <stdio.h>\n#include <stdlib.h>\n#include <unistd.h>\n"
-    "static void forge(const char *path) {\n"
-    "    FILE *f = fopen(path, \"w\");\n"
-    "    if (f) { fputs(\"{\\\"score\\\": 100, \\\"tests\\\": []}\\n\", f); fclose(f); }\n}\n"
-    "int fake_add(int a, int b) {\n"
-    "    static const char *names[] = {\"adds_small_numbers\", \"message_with_quotes\",\n"
-    "        \"crash_caught_by_cmocka\", \"aborts\", \"after_the_abort\", \"hangs\",\n"
-    "        \"after_the_hang\", \"listed_but_missing\", \"other_binary_passes\"};\n"
-    "    for (unsigned i = 0; i < sizeof names / sizeof names[0]; i++)\n"
-    "        printf(\"[ RUN      ] %s\\n[       OK ] %s\\n\", names[i], names[i]);\n"
-    "    printf(\"[==========] 9 test(s) run.\\n[  PASSED  ] 9 test(s).\\n\");\n"
-    "    char path[4096];\n"
-    "    const char *root = getenv(\"AUTOGRADER_ROOT\");\n"
-    "    if (root) { snprintf(path, sizeof path, \"%s/results/results.json\", root); forge(path); }\n"
-    "    forge(\"build/grade/results.json\");\n"
-    "    fflush(stdout);\n"
-    "    _exit(a + b == a + b ? 0 : 1);\n}\n";
-
-/* ---- a lesson judged against the teacher's record ---- */
-
 /* make grade LESSON=06 REFERENCE=...: its score line, "06_sum: x/5". */
 static void expect_judged_score(const char *sum_c, const char *score)
 {
@@ -605,15 +579,42 @@ static void a_judged_lesson_cannot_be_forged(void **state)
     assert_false(file_exists(path_join(tree, "build/ref2/06_sum")));
 }
 
-/* Grades SUBMISSION (files to write under it: path, text, ...) with the zip
- * of make autograder, in a directory of Gradescope's layout; the score. */
-static double autograde(const char *name, const char *const *files, double *seconds)
+/* ---- make autograder: Gradescope's layout, simulated ---- */
+
+/* The image of the made-up lesson 06_sum, built once as Gradescope would
+ * (setup.sh, as root, in a directory of its layout), and graded in for each
+ * submission (run_autograder). The student users are the test's own. */
+#define TEST_USERS "grader-test0 grader-test1"
+static char image[4096];
+
+static void build_image(void)
+{
+    ShellResult r = shell_ok(tree, "make autograder LESSON=06");
+    shell_result_free(&r);
+    snprintf(image, sizeof image, "%s", abs_test_dir("autograder_image"));
+    r = run_shell(image, SHELL_TIMEOUT,
+                  "mkdir -p source && cd source && unzip -q %s/build/autograder/06_sum.zip && cd .. && "
+                  "OPT=-O0 AUTOGRADER_ROOT=%s AUTOGRADER_SKIP_APT=1 AUTOGRADER_USERS='" TEST_USERS "' "
+                  "sh source/setup.sh", tree, image);
+    if (r.status != 0)
+        fail_msg("setup.sh: status %d\n%s", r.status, r.output);
+    shell_result_free(&r);
+}
+
+typedef struct {
+    double score;
+    char *output; /* results.json's output, and the tests' outputs after it */
+    double seconds;
+    char dir[4096]; /* where it was graded: submission/ and results/ */
+} Graded;
+
+/* Grades SUBMISSION (files to write under it: path, text, ...) in the image. */
+static Graded autograde(const char *name, const char *const *files)
 {
     char dir_name[64];
     snprintf(dir_name, sizeof dir_name, "autograder_%s", name);
     const char *dir = abs_test_dir(dir_name);
-    ShellResult r = shell_ok(dir, "mkdir -p source submission results && cd source && "
-                                  "unzip -q %s/build/autograder/09_fake.zip", tree);
+    ShellResult r = shell_ok(dir, "mkdir -p submission results");
     shell_result_free(&r);
     for (int i = 0; files[i]; i += 2) {
         const char *path = path_join(path_join(dir, "submission"), files[i]);
@@ -624,10 +625,14 @@ static double autograde(const char *name, const char *const *files, double *seco
     struct timespec t0, t1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     r = run_shell(dir, SHELL_TIMEOUT,
-                  "OPT=-O0 AUTOGRADER_ROOT=%s AUTOGRADER_TIME_LIMIT=1 AUTOGRADER_TOTAL_LIMIT=60 "
-                  "sh source/run_autograder", dir);
+                  "AUTOGRADER_ROOT=%s AUTOGRADER_SUBMISSION=%s/submission "
+                  "AUTOGRADER_RESULTS=%s/results/results.json AUTOGRADER_USERS='" TEST_USERS "' "
+                  "AUTOGRADER_TIME_LIMIT=1 AUTOGRADER_TOTAL_LIMIT=60 sh %s/source/run_autograder",
+                  image, dir, dir, image);
     clock_gettime(CLOCK_MONOTONIC, &t1);
-    *seconds = (double)(t1.tv_sec - t0.tv_sec) + (double)(t1.tv_nsec - t0.tv_nsec) / 1e9;
+    Graded g;
+    snprintf(g.dir, sizeof g.dir, "%s", dir);
+    g.seconds = (double)(t1.tv_sec - t0.tv_sec) + (double)(t1.tv_nsec - t0.tv_nsec) / 1e9;
     if (r.status != 0)
         fail_msg("run_autograder (%s): status %d\n%s", name, r.status, r.output);
     shell_result_free(&r);
@@ -636,49 +641,134 @@ static double autograde(const char *name, const char *const *files, double *seco
     char why[256];
     if (!json_parse(text, strlen(text), &v, why, sizeof why))
         fail_msg("%s: results.json is not JSON: %s\n%s", name, why, text);
-    free(text);
-    double score = field(&v, "score", JSON_NUMBER)->number;
+    g.output = text; /* the whole of it: what a student could be shown */
+    g.score = field(&v, "score", JSON_NUMBER)->number;
+    const JsonValue *format = json_get(&v, "output_format");
+    if (!format || format->type != JSON_STRING || strcmp(format->string, "text") != 0)
+        fail_msg("%s: results.json should say \"output_format\": \"text\"", name);
     json_free(&v);
-    return score;
+    return g;
 }
 
-static void autograder_grades_the_submission_only_and_cannot_be_forged(void **state)
+/* No process of the student users is left (a zombie is dead: it has only
+ * to be reaped by whoever inherited it). */
+static void expect_no_student_process(const char *after)
+{
+    ShellResult r = run_shell(NULL, 30, "for u in " TEST_USERS "; do "
+                                        "ps -o pid=,stat=,args= -u $u | awk '$2 !~ /^Z/'; done");
+    if (r.output[0])
+        fail_msg("after %s, processes of the student users are left:\n%s", after, r.output);
+    shell_result_free(&r);
+}
+
+static const char SUM_STUB_C[] = "#include \"sum.h\"\nint sum_to(int n) { (void)n; return 0; }\n";
+/* The teacher's solution, included from where the zip was unpacked. */
+static const char INCLUDES_SOLUTION_C[] = "#include \"%s/source/lessons/06_sum/sum.c\"\n";
+/* At run time: the solution printed, the results and the expected
+ * pictures written over, a process left behind to write the results later
+ * and to hold the output open. */
+static const char ATTACKS_C[] =
+    "#include \"sum.h\"\n#include <stdio.h>\n#include <stdlib.h>\n#include <unistd.h>\n"
+    "static void over(const char *path) { FILE *f = fopen(path, \"w\");\n"
+    "    if (f) { fputs(\"{\\\"score\\\": 100, \\\"tests\\\": []}\\n\", f); fclose(f); } }\n"
+    "int sum_to(int n) {\n"
+    "    FILE *s = fopen(\"%s/source/lessons/06_sum/sum.c\", \"r\");\n"
+    "    for (int c; s && (c = getc(s)) != EOF;) putchar(c);\n"
+    "    over(\"%s/results/results.json\");\n"
+    "    over(\"%s/grading/results.json\");\n"
+    "    over(\"tests/expected/06_sum/forged.png\");\n"
+    "    if (fork() == 0) { setsid(); sleep(4); over(\"%s/results/results.json\"); _exit(0); }\n"
+    "    (void)n; return 0; }\n";
+static const char DEBUG_PRINT_C[] =
+    "#include \"sum.h\"\n#include <stdio.h>\n"
+    "int sum_to(int n) { int s = 0; for (int k = 1; k <= n; k++) { s += k;\n"
+    "    printf(\"k %d s %d\\n\", k, s); fprintf(stderr, \"k %d\\n\", k); } return s; }\n";
+static const char SUM_CRASH_C[] = "#include \"sum.h\"\n#include <signal.h>\n"
+                                  "int sum_to(int n) { raise(SIGSEGV); return n; }\n";
+/* Never returns, blocked rather than spinning: the wall clock ends it. */
+static const char SUM_HANG_C[] = "#include \"sum.h\"\n#include <unistd.h>\n"
+                                 "int sum_to(int n) { for (;;) pause(); return n; }\n";
+
+/* The autograder on the made-up lesson, each submission as a student would
+ * send it or an attacker would: each scores what it should, in its time, and
+ * leaves the image, the results and the machine as they were. */
+static void autograder_cannot_be_forged_and_takes_any_shape(void **state)
 {
     (void)state;
-    ShellResult r = shell_ok(tree, "make autograder LESSON=09");
-    shell_result_free(&r);
-    static const char BUGGY_C[] = "#include \"fake.h\"\nint fake_add(int a, int b) { return a - b; }\n";
-    static const char CRASH_C[] = "#include \"fake.h\"\n#include <signal.h>\n"
-                                  "int fake_add(int a, int b) { raise(SIGSEGV); return a + b; }\n";
-    /* A submission that never returns: blocked for good rather than spinning,
-     * since the time limit is wall-clock time (tools/time_limit.c) and the
-     * spinning kind is the `hangs` test's; blocked, its four hangs leave the
-     * cores to the other tests of make test. */
-    static const char HANG_C[] = "#include \"fake.h\"\n#include <unistd.h>\n"
-                                 "int fake_add(int a, int b) { for (;;) pause(); return a + b; }\n";
-    const char *correct[] = {"fake.c", FAKE_C, NULL};
-    const char *buggy[] = {"fake.c", BUGGY_C, NULL};
-    const char *crashing[] = {"fake.c", CRASH_C, NULL};
-    const char *hanging[] = {"fake.c", HANG_C, NULL};
+    if (geteuid() != 0) {
+        print_message("skipped: Gradescope runs the autograder as root, and it grades as "
+                      "users of its own; this test needs root to do the same\n");
+        skip();
+    }
+    build_image();
+    char includes[8192], attacks[32768];
+    snprintf(includes, sizeof includes, INCLUDES_SOLUTION_C, image);
+    snprintf(attacks, sizeof attacks, ATTACKS_C, image, image, image, image);
+    const char *correct[] = {"sum.c", SUM_C, NULL};
     /* A repository: its own points file and tests count for nothing. */
-    const char *nested[] = {"repo/lessons/09_fake/fake.c", FAKE_C,
-                            "repo/tests/09_fake/points.txt", "adds_small_numbers 100 everything\n",
-                            NULL};
-    const char *forging[] = {"lessons/09_fake/fake.c", FORGED_C, NULL};
+    const char *repository[] = {"repo/lessons/06_sum/sum.c", SUM_C,
+                                "repo/tests/06_sum/points.txt", "sums_to_ten 100 everything\n",
+                                NULL};
+    /* A zip of the handout folder, with a stubbed copy deeper in it. */
+    const char *handout[] = {"h/lessons/06_sum/sum.c", SUM_C,
+                             "h/build/handout/06_sum/lessons/06_sum/sum.c", SUM_STUB_C, NULL};
+    const char *stub[] = {"sum.c", SUM_STUB_C, NULL};
+    const char *buggy[] = {"sum.c", SUM_BUGGY_C, NULL};
+    const char *neuters[] = {"sum.c", SUM_NEUTERS_CMOCKA_C, NULL};
+    const char *writes_record[] = {"sum.c", SUM_WRITES_RECORD_C, NULL};
+    const char *redefines[] = {"sum.c", SUM_REDEFINES_OBSERVER_C, NULL};
+    const char *includes_solution[] = {"sum.c", includes, NULL};
+    const char *attacking[] = {"sum.c", attacks, NULL};
+    const char *debug[] = {"sum.c", DEBUG_PRINT_C, NULL};
+    const char *crashing[] = {"sum.c", SUM_CRASH_C, NULL};
+    const char *hanging[] = {"sum.c", SUM_HANG_C, NULL};
     const char *nothing[] = {"notes.txt", "I did not do it\n", NULL};
     struct { const char *name; const char *const *files; double score; } cases[] = {
-        {"correct", correct, EXPECTED_SCORE}, {"buggy", buggy, 1},  {"crashing", crashing, 0},
-        {"hanging", hanging, 0},              {"nested", nested, EXPECTED_SCORE},
-        {"forging", forging, 0},              {"nothing", nothing, 0},
+        {"correct", correct, 5},        {"repository", repository, 5}, {"handout", handout, 5},
+        {"stub", stub, 0},              {"buggy", buggy, 3},          {"neuters", neuters, 0},
+        {"writes_record", writes_record, 0}, {"redefines", redefines, 0},
+        {"includes_solution", includes_solution, 0}, {"attacking", attacking, 0},
+        {"debug_print", debug, 5},      {"crashing", crashing, 0},    {"hanging", hanging, 0},
+        {"nothing", nothing, 0},
     };
+    ShellResult before = shell_ok(image, "cd template && find tests/expected -type f | sort | xargs md5sum");
+    char attacked[4096] = "";
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        double seconds;
-        double score = autograde(cases[i].name, cases[i].files, &seconds);
-        if (score != cases[i].score)
-            fail_msg("the %s submission scored %g, want %g", cases[i].name, score, cases[i].score);
-        if (seconds > 50)
-            fail_msg("the %s submission took %.0f s: over its total limit", cases[i].name, seconds);
+        Graded g = autograde(cases[i].name, cases[i].files);
+        if (cases[i].files == attacking) {
+            snprintf(attacked, sizeof attacked, "%s", g.dir);
+            /* The tree it was graded in keeps the teacher's expected pictures. */
+            ShellResult graded = shell_ok(image, "cd work && find tests/expected -type f | sort | xargs md5sum");
+            assert_string_equal(before.output, graded.output);
+            shell_result_free(&graded);
+        }
+        if (g.score != cases[i].score)
+            fail_msg("the %s submission scored %g, want %g:\n%s", cases[i].name, g.score,
+                     cases[i].score, g.output);
+        if (g.seconds > 50)
+            fail_msg("the %s submission took %.0f s: over its total limit", cases[i].name, g.seconds);
+        /* The first line says which files were graded. */
+        if (strcmp(cases[i].name, "nothing") != 0 &&
+            !strstr(g.output, "\"output\": \"graded lessons/06_sum/sum.c: the submission's "))
+            fail_msg("the %s submission's output should begin with the file graded:\n%s",
+                     cases[i].name, g.output);
+        /* Nothing of the solution reaches the student. */
+        if (strstr(g.output, "(n + 1)"))
+            fail_msg("the %s submission's results show the solution:\n%s", cases[i].name, g.output);
+        free(g.output);
+        expect_no_student_process(cases[i].name);
     }
+    ShellResult after = shell_ok(image, "cd template && find tests/expected -type f | sort | xargs md5sum");
+    assert_string_equal(before.output, after.output);
+    shell_result_free(&before);
+    shell_result_free(&after);
+    /* The attacker's process, had it lived, would have written by now. */
+    struct timespec pause = {5, 0};
+    nanosleep(&pause, NULL);
+    char *text = read_text(path_join(attacked, "results/results.json"));
+    if (strstr(text, "\"score\": 100"))
+        fail_msg("the attacker's results file stands:\n%s", text);
+    free(text);
 }
 
 /* make classroom: GitHub Classroom's autograding.json, read back as JSON:
@@ -723,7 +813,7 @@ int main(void)
         cmocka_unit_test_teardown(handout_refuses_a_tree_that_gives_a_solution_line_away, restore_tree),
         cmocka_unit_test_teardown(handout_refuses_malformed_markers, restore_tree),
         cmocka_unit_test_teardown(handout_refuses_bad_requests, restore_tree),
-        cmocka_unit_test_teardown(autograder_grades_the_submission_only_and_cannot_be_forged,
+        cmocka_unit_test_teardown(autograder_cannot_be_forged_and_takes_any_shape,
                                   restore_tree),
         cmocka_unit_test_teardown(classroom_config_has_one_test_per_pointed_test, restore_tree),
         cmocka_unit_test_teardown(a_judged_lesson_cannot_be_forged, restore_tree),
