@@ -341,10 +341,14 @@ valgrind: $(BINS)
 # ---- Classroom: hand a lesson out, grade it (docs/teaching.md) -------------
 #
 #   make handout LESSON=03 [DEST=dir] [ONLY=1] [EARLIER=solved|stubbed|absent]
+#                [LATER=absent|solved]
 #       the student's tree: lesson 03 with each solution region replaced by
-#       its stub and a TODO(student) hint (tools/handout.sh); ONLY=1 (or
-#       EARLIER=absent) leaves the other lessons out, EARLIER=stubbed takes
-#       their regions out too. DEST defaults to $(BUILD)/handout/<lesson>.
+#       its stub and a TODO(student) hint (tools/handout.sh), the earlier
+#       lessons solved (the student's finished work), the later ones out.
+#       ONLY=1 (or EARLIER=absent) leaves the earlier lessons out but for
+#       what lesson 03 inherits, EARLIER=stubbed takes their regions out too,
+#       LATER=solved keeps the later lessons (which hold lesson 03's answers
+#       in their code). DEST defaults to $(BUILD)/handout/<lesson>.
 #   make grade [LESSON=NN] [TEST=name] [TIME_LIMIT=seconds]
 #       runs the lessons' tests, each under a time limit (10 s by default),
 #       prints a score table with the points of tests/<lesson>/points.txt and
@@ -377,7 +381,7 @@ classroom:
 
 handout:
 	@sh tools/handout.sh --build "$(BUILD)" $(if $(filter 1,$(ONLY)),--only) \
-	    $(if $(EARLIER),--earlier "$(EARLIER)") \
+	    $(if $(EARLIER),--earlier "$(EARLIER)") $(if $(LATER),--later "$(LATER)") \
 	    $(if $(DEST),--dest "$(DEST)") "$(LESSON)"
 
 # Student code that does not compile costs the points of the tests that need

@@ -14,7 +14,9 @@
 #      none fails), judged against them: it must score no more than 2.
 # Then, once:
 #   4. lesson 02's solution with a debug print in its depth test, one line
-#      a fragment: it must score full marks, its output cut short;
+#      a fragment: it must score full marks, its output cut short; and lesson
+#      02 with all but depth_test() written: it must score the points of
+#      every test whose line in points.txt does not name depth_test();
 #   5. every lesson's solution judged while another process keeps every core
 #      busy, as many tests at a time as there are cores: full marks.
 # Prints a table and exits 1 if any of these does not hold, or the records
@@ -127,6 +129,35 @@ case " $* " in *" 02_zbuffer "*)
     if [ "$debug" != "$teacher" ] || [ "$cut" -eq 0 ]; then
         echo "$prog: error: a correct solution with a debug print lost points (or no log was cut):" >&2
         grep '^  FAIL' "$work/debug.$l.log" | grep -v ' 0/0 ' >&2
+        status=1
+    fi ;;
+esac
+
+# 4b. Partial credit: lesson 02 with every function written but depth_test()
+# (its two regions stubbed) scores the points of every test whose points.txt
+# line does not name depth_test(): the coverage tests count on their own.
+case " $* " in *" 02_zbuffer "*)
+    l=02_zbuffer
+    f="$copy/lessons/$l/raster.c"
+    awk '/^inline bool depth_test/ { rest = 1 } !rest { print }' "lessons/$l/raster.c" >"$f"
+    awk '/^inline bool depth_test/ { rest = 1 } rest { print }' "lessons/$l/raster.c" >"$f.tail"
+    awk -v mode=strip -f tools/solution-regions.awk "$f.tail" >>"$f" && rm -f "$f.tail" ||
+        { echo "$prog: error: cannot stub depth_test() alone" >&2; exit 1; }
+    (
+        cd "$copy" || exit 1
+        make --no-print-directory -k grade-build LESSON=02 GRADE_WARNINGS_SHOWN=1 \
+            >"$work/partial.$l.build.log" 2>&1
+        GRADE_TOOLS="$abs_build/tools" sh tools/grade.sh --build build --reference "$records" "$l" \
+            >"$work/partial.$l.log" 2>&1
+    )
+    rm -rf "$copy/lessons/$l"
+    cp -R "lessons/$l" "$copy/lessons/$l"
+    partial=$(score_of "$work/partial.$l.log" "$l")
+    want=$(awk '!/^[ \t]*(#|$)/ && $0 !~ /depth_test\(\)/ { s += $2 } END { print s }' "tests/$l/points.txt")
+    echo "$prog: $l with all but depth_test() written: ${partial:-?} (the tests that do not need it: $want)"
+    if [ "${partial%/*}" != "$want" ]; then
+        echo "$prog: error: partial credit does not match the points file's lines" >&2
+        grep '^  \(PASS\|FAIL\)' "$work/partial.$l.log" | grep -v ' 0/0 ' >&2
         status=1
     fi ;;
 esac

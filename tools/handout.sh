@@ -40,6 +40,7 @@ die() {
 
 only=0
 earlier=""
+later=absent
 dest=""
 build=build
 lesson=""
@@ -47,6 +48,7 @@ while [ $# -gt 0 ]; do
     case $1 in
         --only) only=1 ;;
         --earlier) [ $# -ge 2 ] || usage "--earlier wants solved, stubbed or absent"; earlier=$2; shift ;;
+        --later) [ $# -ge 2 ] || usage "--later wants absent or solved"; later=$2; shift ;;
         --dest) [ $# -ge 2 ] || usage "--dest wants a directory"; dest=$2; shift ;;
         --build) [ $# -ge 2 ] || usage "--build wants a directory"; build=$2; shift ;;
         -*) usage "unknown option $1" ;;
@@ -62,6 +64,10 @@ case $earlier in
     absent) only=1 ;;
     solved|stubbed) [ "$only" -eq 0 ] || usage "--only leaves the other lessons out: not with EARLIER=$earlier" ;;
     *) usage "EARLIER=$earlier: want solved, stubbed or absent" ;;
+esac
+case $later in
+    absent|solved) ;;
+    *) usage "LATER=$later: want absent or solved" ;;
 esac
 [ -f Makefile ] && [ -d lessons ] && [ -d common ] ||
     usage "run it from the top of the series (where the Makefile is)"
@@ -141,6 +147,25 @@ case " $marked " in
         awk -v mode=strip -f "$awk_regions" "docs/$name.md" >"$tmp/docs/$name.md" ||
             die "cannot write the handout of docs/$name.md" ;;
 esac
+
+# The lessons after this one (LATER=absent, the default): out, with their
+# tests, pages, pictures and diffs. They build on this lesson's work: its
+# answers are in their code.
+number_of() { n=${1%%_*}; echo "${n#0}"; }
+if [ "$later" = absent ]; then
+    for d in lessons/*; do
+        [ -d "$d" ] || continue
+        other=${d#lessons/}
+        [ "$(number_of "$other")" -gt "$(number_of "$name")" ] 2>/dev/null || continue
+        rm -rf "${tmp:?}/$d"
+        for top in "$tmp/tests" "$tmp/docs"; do
+            [ -d "$top" ] || continue
+            find "$top" \( -name "*$other*" -o -name "$(echo "$other" | cut -c1-2)_*" \
+                -o -name "*_$(echo "$other" | cut -c1-2).*" \) \
+                -prune -exec rm -rf {} + || die "cannot leave out $other"
+        done
+    done
+fi
 
 # EARLIER=stubbed: every other lesson with regions gets them taken out too
 # (its page as well), so that a later lesson's handout does not solve an
@@ -224,8 +249,11 @@ files="$tmp.files"
 (cd "$tmp" && find . -type f ! -name '*.png' ! -name '*.pfm' ! -name '*.pgm') |
     sed 's|^\./||' | while read -r f; do
         case $f in
-            lessons/"$name"/*|docs/"$name".md) echo "$f" ;;
-            lessons/*|docs/[0-9][0-9]_*) ;;
+            lessons/"$name"/*|docs/"$name".md|tests/"$name"/*) echo "$f" ;;
+            # Other lessons, as the teacher chose to include them: their
+            # code, pages, tests and the diffs between them (with the later
+            # lessons out, all earlier ones: the student's finished work).
+            lessons/*|docs/[0-9][0-9]_*|tests/[0-9][0-9]_*|docs/diffs/*) ;;
             *) echo "$f" ;;
         esac
     done >"$files"

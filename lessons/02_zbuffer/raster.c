@@ -49,20 +49,20 @@ inline bool depth_test(Target *t, size_t i, int face, float d)
     float stored = t->depth[i];
     /* SOLUTION BEGIN: the z-buffer test: does the fragment win pixel i?
      * It must be nearer than what the pixel holds (in this buffer, which
-     * way is nearer?), and a tie keeps the face drawn first. Report every
-     * test with target_record, and keep the winner's depth and face. */
+     * way is nearer?), and a tie keeps the face drawn first. */
     bool passed = d < stored;
+    /* SOLUTION STUB
+    bool passed = false;
+    */
+    /* SOLUTION END */
     target_record(t, i, face, d, stored, passed);
+    /* SOLUTION BEGIN: a fragment that wins leaves its depth and face there. */
     if (passed) {
         t->depth[i] = d;
         t->face[i] = face;
     }
-    return passed;
-    /* SOLUTION STUB
-    (void)face; (void)d; (void)stored;
-    return false;
-    */
     /* SOLUTION END */
+    return passed;
 }
 
 const Rasterizer ZBUFFER = {.clear = clear_depth, .draw_face = draw_face, .stored_to_depth = NULL};

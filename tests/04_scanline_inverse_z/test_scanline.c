@@ -680,7 +680,7 @@ static void coverage_equals_the_edge_function_rule(void **state)
             continue;
         Target t = make_target(width, height);
         assert_true(draw_polygon(&(Primitive){&t, NULL, 0}, v, n, FAR));
-        observe_target(&t);
+        observe_coverage(&t);
         for (int y = 0; y < height; y++)
             for (int x = 0; x < width; x++) {
                 bool expected = reference_inside((const int64_t (*)[2])p, n, winding,

@@ -79,7 +79,7 @@ static void grid_through_the_near_plane_covers_each_pixel_once(void **state)
         Target t;
         assert_true(render_target_init(&t, &CLIPPING_ZBUFFER, w, h, &err));
         assert_true(render_faces(&r, &t, &CLIPPING_ZBUFFER, NULL, 0, NULL, NULL, &err));
-        observe_target(&t);
+        observe_coverage(&t);
         for (int y = 0; y < h; y++) {
             double b = 1 - (y + 0.5) / 60.0;
             double d = 0.3 * sqrt(2.0) / (1 - b * tan(PI / 6));

@@ -205,7 +205,7 @@ void observe_exact_data(const char *file, int line, const char *what, const void
                   p ? observe_hash(OBSERVE_HASH_START, p, n) : 0, n);
 }
 
-void observe_target_at(const char *file, int line, const void *target)
+void observe_target_at(const char *file, int line, const void *target, bool faces)
 {
     if (!record)
         return;
@@ -214,7 +214,8 @@ void observe_target_at(const char *file, int line, const void *target)
     observe_exact(file, line, "target %d %d", t ? t->width : 0, t ? t->height : 0);
     if (n == 0)
         return;
-    observe_exact_data(file, line, "face", t->face, n * sizeof *t->face);
+    if (faces)
+        observe_exact_data(file, line, "face", t->face, n * sizeof *t->face);
     if (t->counting)
         observe_exact_data(file, line, "overdraw", t->overdraw, n * sizeof *t->overdraw);
 }

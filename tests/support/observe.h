@@ -100,8 +100,11 @@ static inline uint64_t observe_picture_hash(int width, int height, const uint8_t
  *   observe_value(what, integer)             an integer that must be equal
  *   observe_number(what, number)             a double that must be equal
  *   observe_near(actual, expected, tolerance) a number within tolerance
- *   observe_target(t)                         a Target's coverage: its face
- *                                             and overdraw buffers, equal
+ *   observe_target(t)                         a Target's face and overdraw
+ *                                             buffers, equal
+ *   observe_coverage(t)                       its overdraw buffer alone (the
+ *                                             fragments tested per pixel): what
+ *                                             a coverage test reads
  *   observe_worst(values, n, expected, tolerance)   n floats that must each be
  *                                             within tolerance of expected: the
  *                                             farthest of them (NaN: infinitely far) */
@@ -109,10 +112,11 @@ static inline uint64_t observe_picture_hash(int width, int height, const uint8_t
 #define observe_value(what, v) observe_exact(__FILE__, __LINE__, "%s %lld", (what), (long long)(v))
 #define observe_number(what, v) observe_exact(__FILE__, __LINE__, "%s %a", (what), (double)(v))
 #define observe_near(a, e, tol) observe_close(__FILE__, __LINE__, (a), (e), (tol))
-#define observe_target(t) observe_target_at(__FILE__, __LINE__, (t))
+#define observe_target(t) observe_target_at(__FILE__, __LINE__, (t), true)
+#define observe_coverage(t) observe_target_at(__FILE__, __LINE__, (t), false)
 #define observe_worst(v, n, e, tol) observe_worst_at(__FILE__, __LINE__, (v), (n), (e), (tol))
 void observe_exact_data(const char *file, int line, const char *what, const void *p, size_t n);
-void observe_target_at(const char *file, int line, const void *target);
+void observe_target_at(const char *file, int line, const void *target, bool faces);
 void observe_worst_at(const char *file, int line, const float *values, size_t n, double expected,
                       double tolerance);
 

@@ -864,6 +864,43 @@ static void seed_build(const char *h)
              h, seed, seed, h, seed, h, seed, seed, h);
 }
 
+/* make handout LESSON=NN with no option: the graded handout. It is written
+ * (so handout.sh found no answer to a region in it), holds this lesson and
+ * the earlier ones, and nothing of a later lesson: no code, test, page,
+ * picture or diff. */
+static void default_handout(void **state)
+{
+    const char *lesson = *state;
+    char base[PATH_MAX_LEN], h[PATH_MAX_LEN + 8];
+    char name[300];
+    snprintf(name, sizeof name, "default_handout_%.250s", lesson);
+    abs_test_dir(name, base, sizeof base);
+    snprintf(h, sizeof h, "%s/h", base);
+    shell_ok(NULL, "make --no-print-directory handout LESSON=%.2s DEST=%s", lesson, h);
+    DIR *d = opendir("lessons");
+    assert_non_null(d);
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        if (!isdigit((unsigned char)e->d_name[0]) || !isdigit((unsigned char)e->d_name[1]))
+            continue;
+        char path[2 * PATH_MAX_LEN];
+        bool later = strncmp(e->d_name, lesson, 2) > 0;
+        snprintf(path, sizeof path, "%s/lessons/%s", h, e->d_name);
+        if (file_exists(path) == later)
+            fail_msg("the default handout of %s %s lessons/%s", lesson,
+                     later ? "holds the later" : "lacks the earlier", e->d_name);
+        if (!later)
+            continue;
+        ShellResult r = shell(h, "find tests docs \\( -name '%.2s_*' -o -name '*_%.2s.*' \\) | head -3",
+                              e->d_name, e->d_name);
+        if (r.output[0])
+            fail_msg("the default handout of %s holds files of lesson %s:\n%s", lesson, e->d_name,
+                     r.output);
+        shell_result_free(&r);
+    }
+    closedir(d);
+}
+
 static void handout_round_trip(void **state)
 {
     const char *lesson = *state;
@@ -965,9 +1002,9 @@ int main(void)
      * workloads above all) run several times faster: the sum is smaller. */
     snprintf(make_opts, sizeof make_opts, "OPT=-O2 -j2");
 
-    static char names[2 * MAX_LESSONS][300];
+    static char names[3 * MAX_LESSONS][300];
     static char lessons[MAX_LESSONS][256];
-    struct CMUnitTest tests[2 * MAX_LESSONS];
+    struct CMUnitTest tests[3 * MAX_LESSONS];
     int n = 0;
     DIR *d = opendir("lessons");
     if (!d) {
@@ -987,7 +1024,9 @@ int main(void)
                                        NULL, NULL, lessons[i]};
         snprintf(names[n + i], sizeof names[0], "handout_round_trip_%.200s", lessons[i]);
         tests[n + i] = (struct CMUnitTest){names[n + i], handout_round_trip, NULL, NULL, lessons[i]};
+        snprintf(names[2 * n + i], sizeof names[0], "default_handout_of_%.200s", lessons[i]);
+        tests[2 * n + i] = (struct CMUnitTest){names[2 * n + i], default_handout, NULL, NULL, lessons[i]};
     }
     return _cmocka_run_group_tests("tools: make handout and make grade on every lesson", tests,
-                                   (size_t)(2 * n), NULL, NULL);
+                                   (size_t)(3 * n), NULL, NULL);
 }
