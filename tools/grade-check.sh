@@ -52,6 +52,20 @@ score_of() { # score_of LOG LESSON: "got/max" from grade.sh's table
     sed -n "s/^  $2: \([0-9.]*\/[0-9.]*\)\$/\1/p" "$1" | tail -n 1
 }
 
+# judged_in_copy TAG LESSON: the copy's lesson as it is now, built and judged
+# against the records into $work/TAG.LESSON.log; then the lesson put back.
+judged_in_copy() {
+    (
+        cd "$copy" || exit 1
+        make --no-print-directory -k grade-build LESSON="${2%%_*}" GRADE_WARNINGS_SHOWN=1 \
+            >"$work/$1.$2.build.log" 2>&1
+        GRADE_TOOLS="$abs_build/tools" sh tools/grade.sh --build build --reference "$records" "$2" \
+            >"$work/$1.$2.log" 2>&1
+    )
+    rm -rf "$copy/lessons/$2"
+    cp -R "lessons/$2" "$copy/lessons/$2"
+}
+
 # 1. The teacher's records, every lesson at once.
 rm -rf "$records"
 for l in "$@"; do
@@ -113,15 +127,7 @@ case " $* " in *" 02_zbuffer "*)
          END { if (!done) exit 1 }' "lessons/$l/raster.c" >"$f.tmp" &&
         { echo '#include <stdio.h>'; cat "$f.tmp"; } >"$f" && rm -f "$f.tmp" ||
         { echo "$prog: error: no place for a debug print in lessons/$l/raster.c" >&2; exit 1; }
-    (
-        cd "$copy" || exit 1
-        make --no-print-directory -k grade-build LESSON=02 GRADE_WARNINGS_SHOWN=1 \
-            >"$work/debug.$l.build.log" 2>&1
-        GRADE_TOOLS="$abs_build/tools" sh tools/grade.sh --build build --reference "$records" "$l" \
-            >"$work/debug.$l.log" 2>&1
-    )
-    rm -rf "$copy/lessons/$l"
-    cp -R "lessons/$l" "$copy/lessons/$l"
+    judged_in_copy debug "$l"
     teacher=$(score_of "$work/reference.$l.log" "$l")
     debug=$(score_of "$work/debug.$l.log" "$l")
     cut=$(grep -l 'more bytes of output: cut at' "$copy"/build/grade/$l/run/*.log 2>/dev/null | wc -l)
@@ -143,15 +149,7 @@ case " $* " in *" 02_zbuffer "*)
     awk '/^inline bool depth_test/ { rest = 1 } rest { print }' "lessons/$l/raster.c" >"$f.tail"
     awk -v mode=strip -f tools/solution-regions.awk "$f.tail" >>"$f" && rm -f "$f.tail" ||
         { echo "$prog: error: cannot stub depth_test() alone" >&2; exit 1; }
-    (
-        cd "$copy" || exit 1
-        make --no-print-directory -k grade-build LESSON=02 GRADE_WARNINGS_SHOWN=1 \
-            >"$work/partial.$l.build.log" 2>&1
-        GRADE_TOOLS="$abs_build/tools" sh tools/grade.sh --build build --reference "$records" "$l" \
-            >"$work/partial.$l.log" 2>&1
-    )
-    rm -rf "$copy/lessons/$l"
-    cp -R "lessons/$l" "$copy/lessons/$l"
+    judged_in_copy partial "$l"
     partial=$(score_of "$work/partial.$l.log" "$l")
     want=$(awk '!/^[ \t]*(#|$)/ && $0 !~ /depth_test\(\)/ { s += $2 } END { print s }' "tests/$l/points.txt")
     echo "$prog: $l with all but depth_test() written: ${partial:-?} (the tests that do not need it: $want)"
