@@ -374,8 +374,8 @@ GRADE_TESTS   := $(patsubst tests/%.c,$(BUILD)/tests/%,\
 autograder:
 	@sh tools/autograder.sh --build "$(BUILD)" "$(LESSON)"
 
-#   make classroom LESSON=NN [DEST=file]   GitHub Classroom's autograding tests,
-#       .github/classroom/autograding.json: one per test with points
+#   make classroom LESSON=NN [DEST=file]   Classroom 50's declarative tests,
+#       classroom50/tests.json: a setup, then one per test with points
 classroom:
 	@sh tools/classroom.sh $(if $(DEST),--dest "$(DEST)") "$(LESSON)"
 

@@ -1,13 +1,21 @@
 #!/bin/sh
-# classroom.sh: GitHub Classroom's autograding configuration of one lesson.
+# classroom.sh: Classroom 50's autograding tests of one lesson.
 #
 #   sh tools/classroom.sh [--dest FILE] LESSON   (make classroom LESSON=NN)
 #
-# Writes .github/classroom/autograding.json (or FILE): one test per line of
-# tests/<lesson>/points.txt with points, each "make grade LESSON=NN TEST=name",
-# which exits 0 exactly when that test passed (tools/grade.sh).
+# Writes classroom50/tests.json (or FILE): the bare JSON array of declarative
+# tests that Classroom 50 reads (gh teacher assignment add ... --tests FILE, or
+# the assignment form), in its "run" type, which passes when the command
+# exits 0:
+#   - first "setup", 0 points: the packages (make deps) and the lesson's
+#     build, going on past errors (what does not build scores 0 later);
+#   - then one test per line of tests/<lesson>/points.txt with points, whose
+#     command is tools/grade.sh --test NAME: it grades that one test and exits
+#     0 exactly when it passed.
+# Classroom 50 grades in the student's own repository, with the student's
+# copy of the tests: docs/teaching.md says what that can and cannot prove.
 set -eu
-dest=.github/classroom/autograding.json
+dest=classroom50/tests.json
 lesson=""
 while [ $# -gt 0 ]; do
     case $1 in
@@ -16,7 +24,7 @@ while [ $# -gt 0 ]; do
     esac
     shift
 done
-[ -n "$lesson" ] || { echo "usage: make classroom LESSON=NN" >&2; exit 2; }
+[ -n "$lesson" ] || { echo "usage: make classroom LESSON=NN [DEST=file]" >&2; exit 2; }
 name=""
 for d in lessons/"$lesson"*; do [ -d "$d" ] && name=${d#lessons/}; done
 [ -n "$name" ] || { echo "classroom: error: no lesson LESSON=$lesson in lessons/" >&2; exit 2; }
@@ -24,13 +32,17 @@ number=$(echo "$name" | cut -c1-2)
 points="tests/$name/points.txt"
 [ -f "$points" ] || { echo "classroom: error: $points is missing" >&2; exit 1; }
 mkdir -p "$(dirname "$dest")"
-awk -v n="$number" '
+awk -v n="$number" -v lesson="$name" '
+    BEGIN {
+        print "["
+        printf "  {\"name\": \"setup\", \"type\": \"run\", \"run\": \"make deps && make -k grade-build LESSON=%s GRADE_WARNINGS_SHOWN=1; exit 0\", \"timeout\": 600, \"points\": 0}", n
+    }
     /^[ \t]*(#|$)/ { next }
     $2 + 0 > 0 {
-        printf "%s    {\"name\": \"%s\", \"setup\": \"%s\", \"run\": \"make grade LESSON=%s TEST=%s\", \"input\": \"\", \"output\": \"\", \"comparison\": \"included\", \"timeout\": 10, \"points\": %s}",
-            count++ ? ",\n" : "", $1, count == 1 ? "sudo apt-get update && sudo apt-get install -y libstb-dev zlib1g-dev libcmocka-dev pkg-config" : "", n, $1, $2 + 0
+        printf ",\n  {\"name\": \"%s\", \"type\": \"run\", \"run\": \"sh tools/grade.sh --build build --test %s %s\", \"timeout\": 120, \"points\": %s}",
+            $1, $1, lesson, $2 + 0
     }
-    BEGIN { print "{\"tests\": [" }
-    END { print "\n]}" }' "$points" >"$dest.tmp"
+    END { print "\n]" }' "$points" >"$dest.tmp"
 mv "$dest.tmp" "$dest"
-echo "classroom: wrote $dest: $(grep -c '"run"' "$dest") tests of $name"
+echo "classroom: wrote $dest: $(($(grep -c '"run"' "$dest") - 1)) tests of $name, after its setup"
+echo "classroom: gh teacher assignment add ... --tests $dest   (or paste it into the assignment form)"

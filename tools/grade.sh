@@ -34,7 +34,7 @@
 #
 # --test NAME (make grade TEST=name) grades that one test, run alone in each
 # test program; the exit status is then 0 if it passed and 1 if not, so that
-# a CI step per test can give it its points (GitHub Classroom, docs/teaching.md).
+# a CI step per test can give it its points (Classroom 50, docs/teaching.md).
 #
 # Who decides that a test passed. Without --reference, the test program
 # itself, as above: the student's own feedback, on a machine the student

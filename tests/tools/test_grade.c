@@ -771,34 +771,51 @@ static void autograder_cannot_be_forged_and_takes_any_shape(void **state)
     free(text);
 }
 
-/* make classroom: GitHub Classroom's autograding.json, read back as JSON:
- * one test per line of points.txt with points, with every field it wants. */
-static void classroom_config_has_one_test_per_pointed_test(void **state)
+/* make classroom: Classroom 50's declarative tests, read back as JSON: a
+ * setup, then one "run" test per line of points.txt with points; and their
+ * commands run as Classroom 50 runs them, in the tree: the setup builds, a
+ * test that passes exits 0, one that fails does not. */
+static void classroom_tests_run_as_classroom_50_runs_them(void **state)
 {
     (void)state;
-    ShellResult r = shell_ok(tree, "make classroom LESSON=09");
+    ShellResult r = shell_ok(tree, "make classroom LESSON=06");
     shell_result_free(&r);
-    char *text = read_text(path_join(tree, ".github/classroom/autograding.json"));
+    char *text = read_text(path_join(tree, "classroom50/tests.json"));
     JsonValue v;
     char why[256];
     if (!json_parse(text, strlen(text), &v, why, sizeof why))
-        fail_msg("autograding.json is not JSON: %s\n%s", why, text);
+        fail_msg("tests.json is not JSON: %s\n%s", why, text);
     free(text);
-    const JsonValue *tests = field(&v, "tests", JSON_ARRAY);
-    assert_int_equal(tests->count, 9);
+    if (v.type != JSON_ARRAY)
+        fail_msg("tests.json holds a %s, not the bare array Classroom 50 reads", json_type_name(v.type));
+    assert_int_equal(v.count, 4); /* the setup, and the three tests with points */
     double points = 0;
-    static const char *const strings[] = {"name", "setup", "run", "input", "output", "comparison"};
-    for (size_t i = 0; i < tests->count; i++) {
-        for (size_t k = 0; k < sizeof strings / sizeof strings[0]; k++)
-            field(&tests->items[i], strings[k], JSON_STRING);
-        field(&tests->items[i], "timeout", JSON_NUMBER);
-        points += field(&tests->items[i], "points", JSON_NUMBER)->number;
-        char want[300];
-        snprintf(want, sizeof want, "make grade LESSON=09 TEST=%s",
-                 field(&tests->items[i], "name", JSON_STRING)->string);
-        assert_string_equal(field(&tests->items[i], "run", JSON_STRING)->string, want);
+    for (size_t i = 0; i < v.count; i++) {
+        const JsonValue *t = &v.items[i];
+        const char *name = field(t, "name", JSON_STRING)->string;
+        assert_string_equal(field(t, "type", JSON_STRING)->string, "run");
+        double timeout = field(t, "timeout", JSON_NUMBER)->number;
+        assert_true(timeout >= 1 && timeout <= 600);
+        points += field(t, "points", JSON_NUMBER)->number;
+        if (i == 0)
+            assert_string_equal(name, "setup");
+        /* The command, as the runner would run it: in the checkout, by sh. */
+        const char *run = field(t, "run", JSON_STRING)->string;
+        r = run_shell(tree, SHELL_TIMEOUT, "%s", run);
+        if (r.status != 0)
+            fail_msg("%s: `%s` exits %d on the solution:\n%s", name, run, r.status, r.output);
+        shell_result_free(&r);
     }
-    assert_true(points == EXPECTED_MAX);
+    assert_true(points == 5.0);
+    /* A wrong sum_to: its test's command fails. */
+    write_text(path_join(tree, "lessons/06_sum/sum.c"), SUM_BUGGY_C);
+    r = run_shell(tree, SHELL_TIMEOUT, "%s", field(&v.items[0], "run", JSON_STRING)->string);
+    shell_result_free(&r);
+    r = run_shell(tree, SHELL_TIMEOUT, "%s", field(&v.items[2], "run", JSON_STRING)->string);
+    write_text(path_join(tree, "lessons/06_sum/sum.c"), SUM_C);
+    if (r.status == 0)
+        fail_msg("`%s` passed with a bug in sum_to", field(&v.items[2], "run", JSON_STRING)->string);
+    shell_result_free(&r);
     json_free(&v);
 }
 
@@ -815,7 +832,7 @@ int main(void)
         cmocka_unit_test_teardown(handout_refuses_bad_requests, restore_tree),
         cmocka_unit_test_teardown(autograder_cannot_be_forged_and_takes_any_shape,
                                   restore_tree),
-        cmocka_unit_test_teardown(classroom_config_has_one_test_per_pointed_test, restore_tree),
+        cmocka_unit_test_teardown(classroom_tests_run_as_classroom_50_runs_them, restore_tree),
         cmocka_unit_test_teardown(a_judged_lesson_cannot_be_forged, restore_tree),
     };
     return cmocka_run_group_tests_name("tools: make grade and make handout on a made-up lesson",
