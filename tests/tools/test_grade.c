@@ -308,10 +308,19 @@ static void expect_test(const JsonValue *results, const char *name, double score
         fail_msg("the output of %s should say \"%s\"; it is:\n%s", name, output_has, out);
 }
 
+/* Every file of the tree outside build/, with its checksum: what a grade
+ * must leave as it was. */
+#define TREE_SUMS "find . -path ./build -prune -o -type f -print | sort | xargs md5sum"
+
 static void each_failure_costs_only_its_own_points(void **state)
 {
     (void)state;
+    ShellResult before = shell_ok(tree, TREE_SUMS);
     ShellResult r = shell_ok(tree, "make -j2 OPT=-O0 grade LESSON=09 TIME_LIMIT=1");
+    ShellResult after = shell_ok(tree, TREE_SUMS);
+    assert_string_equal(before.output, after.output); /* a grade changes nothing but build/ */
+    shell_result_free(&before);
+    shell_result_free(&after);
     if (!strstr(r.output, "09_fake: 6/11") || !strstr(r.output, "total 6/11"))
         fail_msg("the score table should end 09_fake: 6/11:\n%s", r.output);
     /* The table says what a failed test checks. */
