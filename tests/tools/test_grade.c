@@ -18,6 +18,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "harness/file.h"
@@ -600,7 +601,12 @@ static void build_image(void)
 {
     ShellResult r = shell_ok(tree, "make autograder LESSON=06");
     shell_result_free(&r);
-    snprintf(image, sizeof image, "%s", abs_test_dir("autograder_image"));
+    /* In /tmp, readable on the way down: the student users must reach the
+     * tree they are graded in, as they reach /autograder on Gradescope, and
+     * TEST_OUTPUT may lie below a directory only its owner enters. */
+    snprintf(image, sizeof image, "/tmp/autograder-test.XXXXXX");
+    if (!mkdtemp(image) || chmod(image, 0755) != 0)
+        fail_msg("cannot make a directory for the autograder's image in /tmp");
     r = run_shell(image, SHELL_TIMEOUT,
                   "mkdir -p source && cd source && unzip -q %s/build/autograder/06_sum.zip && cd .. && "
                   "OPT=-O0 AUTOGRADER_ROOT=%s AUTOGRADER_SKIP_APT=1 AUTOGRADER_USERS='" TEST_USERS "' "
@@ -697,6 +703,17 @@ static const char SUM_CRASH_C[] = "#include \"sum.h\"\n#include <signal.h>\n"
 /* Never returns, blocked rather than spinning: the wall clock ends it. */
 static const char SUM_HANG_C[] = "#include \"sum.h\"\n#include <unistd.h>\n"
                                  "int sum_to(int n) { for (;;) pause(); return n; }\n";
+
+/* After the autograder's test: its image gone from /tmp, and the tree as set up. */
+static int remove_image(void **state)
+{
+    if (image[0]) {
+        ShellResult r = run_shell(NULL, 60, "rm -rf %s", image);
+        shell_result_free(&r);
+        image[0] = '\0';
+    }
+    return restore_tree(state);
+}
 
 /* The autograder on the made-up lesson, each submission as a student would
  * send it or an attacker would: each scores what it should, in its time, and
@@ -840,7 +857,7 @@ int main(void)
         cmocka_unit_test_teardown(handout_refuses_malformed_markers, restore_tree),
         cmocka_unit_test_teardown(handout_refuses_bad_requests, restore_tree),
         cmocka_unit_test_teardown(autograder_cannot_be_forged_and_takes_any_shape,
-                                  restore_tree),
+                                  remove_image),
         cmocka_unit_test_teardown(classroom_tests_run_as_classroom_50_runs_them, restore_tree),
         cmocka_unit_test_teardown(a_judged_lesson_cannot_be_forged, restore_tree),
     };
