@@ -18,7 +18,9 @@
 #      02 with all but depth_test() written: it must score the points of
 #      every test whose line in points.txt does not name depth_test();
 #   5. every lesson's solution judged while another process keeps every core
-#      busy, as many tests at a time as there are cores: full marks.
+#      busy, as many tests at a time as there are cores: full marks;
+#   6. the default handout of the last lesson (every earlier lesson solved,
+#      the last stubbed) builds.
 # Prints a table and exits 1 if any of these does not hold, or the records
 # cannot be made.
 set -u
@@ -183,4 +185,19 @@ for l in "$@"; do
     fi
 done
 [ "$status" -eq 0 ] && echo "$prog: on a machine kept busy on all $cores cores, every lesson's solution scores full marks"
+
+# 6. The default handout of the last lesson builds: every earlier lesson as it
+# is and the last one stubbed (test_handout builds each lesson's stubs alone).
+last=""
+for l in "$@"; do last=$l; done
+h="$work/handout"
+rm -rf "$h"
+if sh tools/handout.sh --dest "$h" "$last" >"$work/handout.log" 2>&1 &&
+    (cd "$h" && make --no-print-directory -j"$cores" >>"$work/handout.log" 2>&1); then
+    echo "$prog: the default handout of $last builds"
+else
+    tail -n 20 "$work/handout.log" >&2
+    echo "$prog: error: the default handout of $last does not build (above)" >&2
+    status=1
+fi
 exit "$status"
