@@ -129,7 +129,11 @@ esac
 # Where each run's nonce and result files go: a directory of random name.
 GRADE_PRIVATE=$(mktemp -d "${TMPDIR:-/tmp}/grade.XXXXXXXXXX") || { echo "$prog: error: no temporary directory" >&2; exit 1; }
 trap 'rm -rf "$GRADE_PRIVATE"' EXIT
-export GRADE_DEADLINE GRADE_PRIVATE GRADE_LIMIT="$limit" GRADE_BUILD="$build" GRADE_OUTPUT="$build/test-output/grade"
+# Each test's TEST_OUTPUT is GRADE_OUTPUT/<program>.<test>: under the build
+# by default; GRADE_TEST_OUTPUT=dir puts them elsewhere (the autograder: in a
+# directory of root's, out of the student's build).
+export GRADE_DEADLINE GRADE_PRIVATE GRADE_LIMIT="$limit" GRADE_BUILD="$build"
+export GRADE_OUTPUT="${GRADE_TEST_OUTPUT:-$build/test-output/grade}"
 export GRADE_MODE="$mode" GRADE_RECORDS="$records" GRADE_JUDGE
 GRADE_LOG_MAX=${GRADE_LOG_MAX:-1048576}
 case $GRADE_LOG_MAX in
