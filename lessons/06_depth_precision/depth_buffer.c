@@ -11,16 +11,17 @@
 #define UNORM16_MAX 65535.0    /* 2^16 - 1: the code of z_w = 1 */
 #define UNORM24_MAX 16777215.0 /* 2^24 - 1 */
 
-/* Both mappings as z_w = a + b/d, from the formulas of depth_format.h. */
+/* Each mapping as z_w = a + b/d (log: its plane), from depth_format.h's formulas. */
 DepthSetup depth_setup(DepthFormat format, DepthMapping mapping, double near, double far)
 {
-    DepthSetup s = {.format = format, .mapping = mapping, .near = near, .far = far};
+    DepthSetup s = {.format = format, .mapping = mapping, .near = near, .far = far,
+                    .log_range = log(far / near)};
     /* SOLUTION BEGIN: a and b of each mapping; reversed with far = inf is n/d. */
     if (mapping == STANDARD) {
         s.a = far / (far - near); /* f/(f-n) (1 - n/d) */
         s.b = -near * s.a;
-    } else if (isinf(far)) {
-        s.b = near; /* n/d */
+    } else if (isinf(far) || mapping == LOGARITHMIC) {
+        s.b = near; /* n/d: and log's plane, whose log each fragment takes */
     } else {
         s.a = -near / (far - near); /* n/(f-n) (f/d - 1) */
         s.b = -far * s.a;
@@ -34,12 +35,12 @@ DepthSetup depth_setup(DepthFormat format, DepthMapping mapping, double near, do
 
 double window_depth(const DepthSetup *s, double d)
 {
-    return s->a + s->b / d;
+    return s->mapping == LOGARITHMIC ? log(d / s->near) / s->log_range : s->a + s->b / d;
 }
 
 double view_depth(const DepthSetup *s, double z_w)
 {
-    return s->b / (z_w - s->a);
+    return s->mapping == LOGARITHMIC ? s->near * exp(z_w * s->log_range) : s->b / (z_w - s->a);
 }
 
 static double unorm_max(DepthFormat format)
@@ -82,10 +83,12 @@ double depth_quantum(DepthFormat format, double z_w)
 }
 
 /* The depth step at d: how far apart two surfaces must be, in world units,
- * to store different values: one quantum over |dz_w/dd| = |b| / d^2. */
+ * to store different values: one quantum over |dz_w/dd|, which is |b| / d^2,
+ * or 1 / (d log(f/n)) for log. */
 double depth_step(const DepthSetup *s, double d)
 {
-    return depth_quantum(s->format, window_depth(s, d)) * d * d / fabs(s->b);
+    double slope = s->mapping == LOGARITHMIC ? 1 / (d * s->log_range) : fabs(s->b) / (d * d);
+    return depth_quantum(s->format, window_depth(s, d)) / slope;
 }
 
 /* A triangle's plane of z_w as a GPU sets it up, all in float32: the corners'
@@ -164,7 +167,7 @@ static void draw_precise_face(Target *t, LessonState *s, const ScreenFace *f,
     draw_triangles(t, s, f, ctx, 0.0f);
 }
 
-/* The far plane everywhere, nothing drawn: 1 (standard) or 0 (reversed). */
+/* The far plane everywhere, nothing drawn: 1 (standard, log) or 0 (reversed). */
 static float cleared(const DepthSetup *s)
 {
     return encode_depth(s->format, s->mapping == REVERSED ? 0.0f : 1.0f);
@@ -181,13 +184,16 @@ void clear_depth(Target *t, LessonState *s)
     }
 }
 
-/* What a fragment of triangle p at pixel (x, y) stores: its z_w is the
- * triangle's plane at the pixel centre (plus the offset, lesson 07's), in
- * float32 as a GPU evaluates it, not the scanline's 1/d; in the buffer's format. */
+/* What a fragment of triangle p at pixel (x, y) stores: the triangle's plane at the
+ * pixel centre in float32, as a GPU evaluates it, not the scanline's 1/d (for log,
+ * -log(n/d) / log(f/n) of the plane's n/d), plus the offset (lesson 07's), encoded. */
 float fragment_depth(const Primitive *p, int x, int y)
 {
-    float z_w = p->plane.a0 + p->plane.gx * (float)x + p->plane.gy * (float)y + p->offset;
-    return encode_depth(p->state->depth.format, z_w);
+    const DepthSetup *s = &p->state->depth;
+    float z_w = p->plane.a0 + p->plane.gx * (float)x + p->plane.gy * (float)y;
+    if (s->mapping == LOGARITHMIC)
+        z_w = -logf(z_w) / (float)s->log_range;
+    return encode_depth(s->format, z_w + p->offset);
 }
 
 /* The depth test of one fragment of triangle p at pixel (x, y). */

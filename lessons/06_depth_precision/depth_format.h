@@ -7,14 +7,16 @@
  *   mapping        standard  z_w = f/(f-n) (1 - n/d): 0 at near, 1 at far
  *                  reversed  z_w = n/(f-n) (f/d - 1): 1 at near, 0 at far;
  *                            with far = inf, z_w = n/d
- *   cleared to     1 (standard) or 0 (reversed): the far plane
- *   a fragment     wins when its value < stored (standard), > stored
+ *                  log       z_w = log(d/n) / log(f/n): 0 at near, 1 at far
+ *   cleared to     1 (standard, log) or 0 (reversed): the far plane
+ *   a fragment     wins when its value < stored (standard, log), > stored
  *                  (reversed); a tie keeps the first one drawn
- * Both mappings are z_w = a + b/d, affine in 1/d, so affine on the screen.
- * In the precision a GPU uses, all float32: each corner's z_w = z_c / w_c
- * (z_c = a w_c + b, w_c = d), then each triangle's plane of z_w, evaluated
- * at every pixel centre the scanline covers. The lesson's state (state.h)
- * holds the buffer's setup, chosen before clear_depth. */
+ * Standard and reversed are z_w = a + b/d, affine in 1/d, so affine on the
+ * screen: in float32, as on a GPU, each corner's z_w = z_c / w_c (z_c = a w_c
+ * + b, w_c = d), then each triangle's plane of z_w, evaluated at every pixel
+ * centre the scanline covers. Log is not: its plane is of n/d (a = 0, b = n),
+ * and each fragment writes the log, as a fragment program writing its depth
+ * does. The lesson's state (state.h) holds the setup, chosen before clear_depth. */
 #ifndef DEPTH_FORMAT_H
 #define DEPTH_FORMAT_H
 
@@ -23,7 +25,7 @@
 #include "rasterizer.h"
 
 typedef enum { UNORM16, UNORM24, FLOAT32 } DepthFormat;
-typedef enum { STANDARD, REVERSED } DepthMapping;
+typedef enum { STANDARD, REVERSED, LOGARITHMIC } DepthMapping;
 
 /* A triangle's z_w on the screen, as a GPU sets it up, in float32:
  * z_w = a0 + gx x + gy y at the centre of pixel (x, y). */
@@ -35,7 +37,8 @@ typedef struct DepthSetup {
     DepthFormat format;
     DepthMapping mapping;
     double near, far; /* far may be INFINITY with REVERSED */
-    double a, b;      /* z_w = a + b / d */
+    double a, b;      /* z_w = a + b / d; for LOGARITHMIC the plane's n/d */
+    double log_range; /* log(f/n): LOGARITHMIC's z_w = -log(n/d) / log_range */
 } DepthSetup;
 
 /* A triangle being drawn (rasterizer.h): lesson 04's, and its plane of z_w. */

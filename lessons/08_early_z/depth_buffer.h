@@ -7,7 +7,7 @@
 #include "depth_format.h"
 
 void clear_depth(Target *t, LessonState *s);                    /* the far plane everywhere */
-float fragment_depth(const Primitive *p, int x, int y);         /* its plane's z_w, stored */
+float fragment_depth(const Primitive *p, int x, int y);         /* its z_w, stored */
 bool depth_test(const Primitive *p, int x, int y, float inv_d); /* that against the buffer */
 
 /* The fragment step, each pixel a span covers: a shader and the depth test (early_z.c). */

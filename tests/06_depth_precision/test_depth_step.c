@@ -1,7 +1,7 @@
 /* test_depth_step.c: lesson 06's depth formats and mappings, worked out
  * independently here: the mappings from their formulas (CONVENTIONS), the
  * depth step by brute force over the values the format can hold (integer
- * codes, nextafterf), the issue's figures at near 0.1, far 1000, d = 100
+ * codes, nextafterf), the log mapping's fragments, the issue's figures at near 0.1, far 1000, d = 100
  * worked out on paper, and the depth test's direction, clear value and ties. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -27,6 +27,8 @@ static double z_of(DepthMapping m, double n, double f, double d)
 {
     if (m == STANDARD)
         return f / (f - n) * (1 - n / d);
+    if (m == LOGARITHMIC)
+        return log(d / n) / log(f / n);
     return isinf(f) ? n / d : n / (f - n) * (f / d - 1);
 }
 
@@ -35,6 +37,8 @@ static double d_of(DepthMapping m, double n, double f, double z)
 {
     if (m == STANDARD)
         return n / (1 - z * (f - n) / f);
+    if (m == LOGARITHMIC)
+        return n * pow(f / n, z);
     return isinf(f) ? n / z : n * f / (z * (f - n) + n);
 }
 
@@ -42,7 +46,7 @@ static double d_of(DepthMapping m, double n, double f, double z)
  * next one it can hold towards the far plane, and how far apart in d they are. */
 static double brute_step(DepthFormat fmt, DepthMapping m, double n, double f, double d)
 {
-    double z = z_of(m, n, f, d), toward = m == STANDARD ? 1 : -1, z0, z1;
+    double z = z_of(m, n, f, d), toward = m == REVERSED ? -1 : 1, z0, z1;
     if (fmt == FLOAT32) {
         float zf = (float)z;
         z0 = zf;
@@ -63,9 +67,9 @@ static void step_matches_brute_force_for_every_format_and_mapping(void **state)
     int checked = 0;
     for (int fi = 0; fi < 3; fi++)
         for (int fmt = 0; fmt < 3; fmt++)
-            for (int m = 0; m < 2; m++) {
+            for (int m = 0; m < 3; m++) {
                 double f = fars[fi];
-                if (isinf(f) && m == STANDARD)
+                if (isinf(f) && m != REVERSED)
                     continue;
                 DepthSetup s = depth_setup((DepthFormat)fmt, (DepthMapping)m, NEAR, f);
                 for (size_t k = 0; k < sizeof ds / sizeof ds[0]; k++) {
@@ -86,7 +90,7 @@ static void step_matches_brute_force_for_every_format_and_mapping(void **state)
                     checked++;
                 }
             }
-    expect_count(117, checked, "steps checked");
+    expect_count(162, checked, "steps checked");
 }
 
 /* The issue's figures, on paper: |dz_w/dd| = f n / ((f - n) d^2) = 0.1 / 0.9999
@@ -104,6 +108,9 @@ static void issue_figures_at_near_0_1_far_1000_d_100(void **state)
         {UNORM16, STANDARD, 1.5257496},   {UNORM16, REVERSED, 1.5257496},
         {UNORM24, STANDARD, 0.0059598688}, {UNORM24, REVERSED, 0.0059598688},
         {FLOAT32, STANDARD, 0.0059598684}, {FLOAT32, REVERSED, 5.8201840e-6},
+        /* log: |dz_w/dd| = 1 / (d log(f/n)), z_w(100) = 3/4 (a float32 step of 2^-24). */
+        {UNORM16, LOGARITHMIC, 0.014054079}, {UNORM24, LOGARITHMIC, 5.4897910e-5},
+        {FLOAT32, LOGARITHMIC, 5.4897907e-5},
     };
     for (size_t k = 0; k < sizeof FIG / sizeof FIG[0]; k++) {
         DepthSetup s = depth_setup(FIG[k].fmt, FIG[k].m, NEAR, FAR);
@@ -162,6 +169,36 @@ static void a_triangle_plane_from_its_corners(void **state)
     assert_true(fabs(p.gx - -0.00625) < 1e-8);   /* dz_w/dx */
     assert_true(fabs(p.gy - -0.009375) < 1e-8);  /* dz_w/dy */
     assert_true(fabs(p.a0 - 0.0921875) < 1e-8);  /* z_w at the centre of pixel (0, 0) */
+}
+
+/* Log, near 0.1, far 1000: z_w = log(d / 0.1) / log(1e4), so d = 1 gives 1/4
+ * and d = 10 gives 1/2. On the tilted triangle above, n/d is a plane (the
+ * same as reversed with far = inf): 0.0921875 at the centre of pixel (0, 0),
+ * so d = 0.1 / 0.0921875 there and z_w = log(1 / 0.0921875) / log(1e4) =
+ * 0.25883. The log of z_w's corners interpolated on the screen would give
+ * 0.26411 instead: log depth is written per fragment, not stepped. */
+static void log_writes_the_log_of_each_fragments_d(void **state)
+{
+    (void)state;
+    LessonState s = {depth_setup(FLOAT32, LOGARITHMIC, NEAR, FAR)};
+    Target t = one_pixel();
+    clear_depth(&t, &s);
+    assert_true(t.depth[0] == 1.0f); /* the far plane */
+    assert_true(test_at(&t, &s, 0, 10));
+    observe_near(t.depth[0], 0.5, 1e-6);
+    assert_true(fabs(t.depth[0] - 0.5) < 1e-6);
+    assert_true(test_at(&t, &s, 1, 1)); /* nearer wins: smaller z_w */
+    assert_true(fabs(t.depth[0] - 0.25) < 1e-6);
+    assert_false(test_at(&t, &s, 2, 3));
+    expect_count(1, t.face[0], "the nearest face");
+    ScreenVertex v[3] = {{0, 0, 1}, {8, 0, 2}, {0, 8, 4}};
+    Primitive p = {.target = &t, .state = &s, .face = 3, .plane = depth_plane(&s.depth, v)};
+    double want = log(1 / 0.0921875) / log(1e4);
+    observe_near(fragment_depth(&p, 0, 0), want, 1e-6);
+    if (fabs(fragment_depth(&p, 0, 0) - want) > 1e-6)
+        fail_msg("log, tilted triangle, pixel (0, 0): z_w %.7f, want %.7f (the log of the "
+                 "fragment's own d)", fragment_depth(&p, 0, 0), want);
+    target_free(&t);
 }
 
 static void standard_clears_to_one_and_keeps_the_smaller(void **state)
@@ -226,6 +263,7 @@ int main(void)
         cmocka_unit_test(standard_clears_to_one_and_keeps_the_smaller),
         cmocka_unit_test(reversed_clears_to_zero_and_keeps_the_larger),
         cmocka_unit_test(a_tie_keeps_the_first_fragment),
+        cmocka_unit_test(log_writes_the_log_of_each_fragments_d),
     };
     return cmocka_run_group_tests_name("06_depth_precision depth step", tests, NULL, NULL);
 }

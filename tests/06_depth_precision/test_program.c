@@ -2,7 +2,7 @@
  * every format and mapping (its picture, and the fraction of each band where
  * the back plate wins, scored from --id-out as a GPU's picture would be),
  * agreement with lesson 05 at float32 on the other built-in scenes, the
- * precision plot, --far inf, and how it refuses bad input. */
+ * precision plot, --far inf, the log mapping, and how it refuses bad input. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -81,6 +81,36 @@ static void ladder_fails_where_the_step_passes_the_gap(void **state)
                              "over twice the gap", name, d, wrong, paper_step(f, d));
             }
         }
+}
+
+/* Log in unorm16: the step grows as d, not d^2 (d log(f/n) / 65535 on
+ * paper: 0.000141 at d = 1, 0.0422 at d = 300, under the gap), so 16 bits
+ * hold every band of the ladder where the standard mapping fails from d = 30. */
+static void unorm16_log_holds_every_band_of_the_ladder(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("l06_log");
+    Path out = in_dir(dir, "ladder.png"), id = in_dir(dir, "ladder_id.png");
+    const char *args[] = {"--width", "400", "--height", "300", "--depth-format", "unorm16",
+                          "--depth-mapping", "log", "--out", out.path, "--id-out", id.path,
+                          NULL};
+    char *text = run_ok(PROGRAM, args);
+    expect_line(text, "  depth step (unorm16, log, near 0.1, far 1000): d = 1: 0.000141, "
+                      "d = 10: 0.00141, d = 100: 0.0141, d = 300: 0.0422\n");
+    free(text);
+    LadderScore s;
+    Error err;
+    if (!ladder_score_id_png(id.path, &s, &err))
+        fail_msg("%s", err.msg);
+    for (int k = 0; k < LADDER_BANDS; k++) {
+        if (s.front[k] + s.back[k] < 5000)
+            fail_msg("log: band d = %g covers only %ld pixels", LADDER_DISTANCE[k],
+                     s.front[k] + s.back[k]);
+        expect_count(0, s.back[k], "pixels of a band where the back plate wins");
+    }
+    Image im = read_png(out.path);
+    expect_image(&im, GROUP, "ladder_unorm16_log");
+    image_free(&im);
 }
 
 /* The default run: unorm24, standard, the ladder; the summary's steps and bands. */
@@ -200,12 +230,16 @@ static void bad_command_lines_are_refused_with_status_2(void **state)
     expect_run_refused(PROGRAM, fmt, 2,
                        "--depth-format: 'unorm32' is not one of unorm16, unorm24, float32",
                        out.path);
-    const char *map[] = {"--depth-mapping", "log", "--out", out.path, NULL};
-    expect_run_refused(PROGRAM, map, 2, "--depth-mapping: 'log' is not one of standard, reversed",
-                       out.path);
+    const char *map[] = {"--depth-mapping", "linear", "--out", out.path, NULL};
+    expect_run_refused(PROGRAM, map, 2,
+                       "--depth-mapping: 'linear' is not one of standard, reversed, log", out.path);
     const char *inf[] = {"--far", "inf", "--out", out.path, NULL};
-    expect_run_refused(PROGRAM, inf, 2, "--far inf needs --depth-mapping reversed (the standard "
-                                        "mapping divides by far - near)", out.path);
+    expect_run_refused(PROGRAM, inf, 2, "--far inf needs --depth-mapping reversed (standard "
+                                        "divides by far - near, log by log(far / near))", out.path);
+    const char *log_inf[] = {"--far", "inf", "--depth-mapping", "log", "--out", out.path, NULL};
+    expect_run_refused(PROGRAM, log_inf, 2, "--far inf needs --depth-mapping reversed (standard "
+                                            "divides by far - near, log by log(far / near))",
+                       out.path);
     const char *nan[] = {"--far", "nan", "--depth-mapping", "reversed", "--out", out.path, NULL};
     expect_run_refused(PROGRAM, nan, 2, "--far: 'nan' is not a finite number", out.path);
     const char *neg[] = {"--far", "-inf", "--depth-mapping", "reversed", "--out", out.path, NULL};
@@ -225,6 +259,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(ladder_fails_where_the_step_passes_the_gap),
+        cmocka_unit_test(unorm16_log_holds_every_band_of_the_ladder),
         cmocka_unit_test(default_run_reports_steps_and_bands),
         cmocka_unit_test(float32_agrees_with_lesson_05_on_the_built_in_scenes),
         cmocka_unit_test(precision_plot_is_written),

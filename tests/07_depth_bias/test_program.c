@@ -250,6 +250,11 @@ static void bad_command_lines_are_refused_with_status_2(void **state)
     expect_run_refused(PROGRAM, fmt, 2,
                        "--depth-format: 'unorm32' is not one of unorm16, unorm24, float32",
                        out.path);
+    /* Lesson 06's log depth has no plane of z_w for the bias to use. */
+    const char *log_depth[] = {"--depth-mapping", "log", "--out", out.path, NULL};
+    expect_run_refused(PROGRAM, log_depth, 2,
+                       "--depth-mapping log is lesson 06's: a depth written per fragment has no "
+                       "plane to offset or to test early; here standard or reversed", out.path);
     const char *none[] = {"--polygon-offset", NULL};
     expect_run_error(PROGRAM, none, 2, "07_depth_bias: error: --polygon-offset needs a value\n");
 }

@@ -286,6 +286,9 @@ static void bad_command_lines_are_refused_with_status_2(void **state)
     expect_refused("--threads", "two", "--threads: 'two' is not a whole number");
     expect_refused("--depth-format", "unorm8",
                    "--depth-format: 'unorm8' is not one of unorm16, unorm24, float32");
+    expect_refused("--depth-mapping", "log",
+                   "--depth-mapping log is lesson 06's: a depth written per fragment has no "
+                   "plane to offset or to test early; here standard or reversed");
 }
 
 int main(void)

@@ -11,7 +11,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FuzzBytes b = {data, size};
     FuzzScene s;
     fuzz_scene(&s, &b);
-    LessonState state = {.depth = fuzz_depth_setup(&s, &b)};
+    LessonState state = {.depth = fuzz_depth_setup(&s, &b, true)};
     Rasterizer rz = DEPTH_PRECISION_ZBUFFER;
     rz.state = &state;
     Target t;

@@ -12,7 +12,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FuzzBytes b = {data, size};
     FuzzScene s;
     fuzz_scene(&s, &b);
-    LessonState state = {.depth = fuzz_depth_setup(&s, &b), .bias = fuzz_bias(&s, &b)};
+    LessonState state = {.depth = fuzz_depth_setup(&s, &b, false), .bias = fuzz_bias(&s, &b)};
     Rasterizer rz = DEPTH_BIAS_ZBUFFER;
     rz.state = &state;
     Target t;

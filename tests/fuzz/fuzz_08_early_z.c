@@ -14,7 +14,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FuzzBytes b = {data, size};
     FuzzScene s;
     fuzz_scene(&s, &b);
-    LessonState state = {.depth = fuzz_depth_setup(&s, &b), .bias = fuzz_bias(&s, &b)};
+    LessonState state = {.depth = fuzz_depth_setup(&s, &b, false), .bias = fuzz_bias(&s, &b)};
     EarlyZ *z = &state.early_z;
     uint8_t mode = fuzz_u8(&b);
     z->mode = mode & 1 ? Z_EARLY : Z_LATE;

@@ -14,7 +14,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FuzzBytes b = {data, size};
     FuzzScene s;
     fuzz_scene(&s, &b);
-    LessonState state = {.depth = fuzz_depth_setup(&s, &b), .bias = fuzz_bias(&s, &b)};
+    LessonState state = {.depth = fuzz_depth_setup(&s, &b, false), .bias = fuzz_bias(&s, &b)};
     bool cutout[FUZZ_MAX_FACES];
     for (int f = 0; f < s.nfaces; f++)
         cutout[f] = (s.flags[f] & FUZZ_CUTOUT) != 0;

@@ -20,7 +20,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     FuzzBytes b = {data, size};
     FuzzScene s;
     fuzz_scene(&s, &b);
-    DepthSetup depth = fuzz_depth_setup(&s, &b);
+    DepthSetup depth = fuzz_depth_setup(&s, &b, false);
     DepthBias bias = fuzz_bias(&s, &b);
     uint8_t pick = fuzz_u8(&b);
     Simd simd = (Simd)(pick % 4);

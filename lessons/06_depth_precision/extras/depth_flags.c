@@ -6,7 +6,8 @@
 
 static const char *const FORMAT_NAMES[] = {[UNORM16] = "unorm16", [UNORM24] = "unorm24",
                                            [FLOAT32] = "float32"};
-static const char *const MAPPING_NAMES[] = {[STANDARD] = "standard", [REVERSED] = "reversed"};
+static const char *const MAPPING_NAMES[] = {[STANDARD] = "standard", [REVERSED] = "reversed",
+                                            [LOGARITHMIC] = "log"};
 
 /* A finite stand-in for the camera and the clipper when --far is inf: clip
  * space needs a number there; the depth mapping uses infinity itself. */
@@ -33,18 +34,23 @@ static int find_name(const char *name, const char *const *names, int n)
     return -1;
 }
 
-bool depth_flags_ok(Run *run, const char *format, const char *mapping, Error *err)
+bool depth_flags_ok(Run *run, const char *format, const char *mapping, bool log_ok, Error *err)
 {
     if (format && find_name(format, FORMAT_NAMES, 3) < 0)
         return error_set(err, "--depth-format: '%s' is not one of unorm16, unorm24, float32",
                          format);
-    if (mapping && find_name(mapping, MAPPING_NAMES, 2) < 0)
-        return error_set(err, "--depth-mapping: '%s' is not one of standard, reversed", mapping);
+    int m = mapping ? find_name(mapping, MAPPING_NAMES, 3) : STANDARD;
+    if (m < 0)
+        return error_set(err, "--depth-mapping: '%s' is not one of standard, reversed%s", mapping,
+                         log_ok ? ", log" : "");
+    if (m == LOGARITHMIC && !log_ok)
+        return error_set(err, "--depth-mapping log is lesson 06's: a depth written per fragment "
+                              "has no plane to offset or to test early; here standard or reversed");
     bool reversed = mapping && strcmp(mapping, "reversed") == 0;
     if (isinf(run->opt.far)) {
         if (!reversed)
-            return error_set(err, "--far inf needs --depth-mapping reversed (the standard "
-                                  "mapping divides by far - near)");
+            return error_set(err, "--far inf needs --depth-mapping reversed (standard divides "
+                                  "by far - near, log by log(far / near))");
         run->opt.far = FAR_AT_INFINITY;
     }
     if (reversed)
@@ -55,7 +61,7 @@ bool depth_flags_ok(Run *run, const char *format, const char *mapping, Error *er
 DepthSetup depth_flags_setup(const Run *run, const char *format, const char *mapping)
 {
     int f = format ? find_name(format, FORMAT_NAMES, 3) : UNORM24;
-    int m = mapping ? find_name(mapping, MAPPING_NAMES, 2) : STANDARD;
+    int m = mapping ? find_name(mapping, MAPPING_NAMES, 3) : STANDARD;
     /* --far inf, which only the reversed mapping takes, stands as FAR_AT_INFINITY
      * in clip space; a finite far that large is finite in the standard one. */
     double far = m == REVERSED && run->opt.far >= FAR_AT_INFINITY ? INFINITY : run->opt.far;

@@ -15,8 +15,9 @@ enum { FLAG_FORMAT, FLAG_MAPPING, FLAG_PLOT, FLAG_COUNT };
 static const LessonFlag FLAGS[FLAG_COUNT] = {
     [FLAG_FORMAT] = {"--depth-format", "F", "what the depth buffer stores: unorm16, unorm24 "
                                             "(the default) or float32"},
-    [FLAG_MAPPING] = {"--depth-mapping", "M", "standard (the default: 0 at near, 1 at far) or "
-                                              "reversed (1 at near, 0 at far; takes --far inf)"},
+    [FLAG_MAPPING] = {"--depth-mapping", "M",
+                      "standard (the default: 0 at near, 1 at far), reversed (1 at near, 0 at "
+                      "far; takes --far inf) or log (log(d/n) / log(f/n), per fragment)"},
     [FLAG_PLOT] = {"--precision-plot", "FILE.png",
                    "also draw the depth step against distance, every format and mapping",
                    .output = true},
@@ -62,7 +63,8 @@ static bool after_write(Run *run, Error *err)
 
 static bool choose(Run *run, Error *err)
 {
-    if (!depth_flags_ok(run, run->opt.extra[FLAG_FORMAT], run->opt.extra[FLAG_MAPPING], err))
+    if (!depth_flags_ok(run, run->opt.extra[FLAG_FORMAT], run->opt.extra[FLAG_MAPPING], true,
+                        err))
         return false;
     run->after_write = after_write;
     return true;

@@ -112,8 +112,8 @@ bool precision_plot(const char *path, double near, double far, Error *err)
     double x_end = isinf(far) ? FAR_IF_INFINITE : far;
     Axes a = {log10(near), log10(x_end), INFINITY, -INFINITY};
     for (int f = 0; f < 3; f++) /* the y axis: every curve's range, in whole decades */
-        for (int m = 0; m < 2; m++) {
-            if (m == STANDARD && isinf(far))
+        for (int m = 0; m < 3; m++) {
+            if (m != REVERSED && isinf(far))
                 continue;
             DepthSetup s = depth_setup((DepthFormat)f, (DepthMapping)m, near, far);
             for (int x = LEFT; x <= RIGHT; x++) {
@@ -135,8 +135,8 @@ bool precision_plot(const char *path, double near, double far, Error *err)
     int gy = to_y(&a, LADDER_GAP), ly = TOP + 10;
     line(&im, LEFT, gy, RIGHT, gy, 0, (Rgb){0, 0, 0}, true);
     draw_text(&im, LEFT + 8, gy - 12, "the ladder's gap: 0.05", (Rgb){0, 0, 0});
-    for (int f = 0; f < 3; f++)
-        for (int m = 0; m < 2; m++) {
+    for (int m = 0; m < 3; m++)
+        for (int f = 0; f < 3; f++) {
             char label[48];
             Rgb c = COLOUR[f];
             if (m == REVERSED) /* darker, dashed, over the standard curve */
@@ -144,8 +144,9 @@ bool precision_plot(const char *path, double near, double far, Error *err)
             snprintf(label, sizeof label, "%s %s%s", format_name((DepthFormat)f),
                      mapping_name((DepthMapping)m),
                      m == REVERSED && f != FLOAT32 ? " (same)" : "");
-            if (m == STANDARD && isinf(far)) {
-                snprintf(label, sizeof label, "%s standard: no far", format_name((DepthFormat)f));
+            if (m != REVERSED && isinf(far)) {
+                snprintf(label, sizeof label, "%s %s: no far", format_name((DepthFormat)f),
+                         mapping_name((DepthMapping)m));
             } else {
                 DepthSetup s = depth_setup((DepthFormat)f, (DepthMapping)m, near, far);
                 int px = -1, py = 0;
@@ -157,12 +158,18 @@ bool precision_plot(const char *path, double near, double far, Error *err)
                         continue;
                     }
                     int y = to_y(&a, step);
-                    if (px >= 0 && (m == STANDARD || (x / 8) % 2 == 0))
+                    if (m == LOGARITHMIC && x % 10 == 0) /* dots */
+                        dot(&im, x, y, WIDTH[f] + 1, c);
+                    if (px >= 0 && (m == STANDARD || (m == REVERSED && (x / 8) % 2 == 0)))
                         line(&im, px, py, x, y, WIDTH[f], c, false);
                     px = x, py = y;
                 }
             }
-            line(&im, RIGHT + 12, ly + 3, RIGHT + 40, ly + 3, WIDTH[f], c, m == REVERSED);
+            if (m == LOGARITHMIC)
+                for (int x = RIGHT + 14; x <= RIGHT + 40; x += 10)
+                    dot(&im, x, ly + 3, WIDTH[f] + 1, c);
+            else
+                line(&im, RIGHT + 12, ly + 3, RIGHT + 40, ly + 3, WIDTH[f], c, m == REVERSED);
             draw_text(&im, RIGHT + 46, ly, label, c);
             ly += 2 * FONT_LINE_HEIGHT;
         }

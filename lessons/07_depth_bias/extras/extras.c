@@ -158,7 +158,7 @@ static bool after_write(Run *run, Error *err)
 static bool choose(Run *run, Error *err)
 {
     const char *const *x = run->opt.extra;
-    if (!depth_flags_ok(run, x[FLAG_FORMAT], x[FLAG_MAPPING], err) ||
+    if (!depth_flags_ok(run, x[FLAG_FORMAT], x[FLAG_MAPPING], false, err) ||
         !bias_flags_ok(x[FLAG_OFFSET], x[FLAG_CLAMP], err))
         return false;
     run->after_write = after_write;

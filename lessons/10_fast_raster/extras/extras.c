@@ -98,7 +98,7 @@ static bool choose(Run *run, Error *err)
                          SIMD_NAMES[simd_best()]);
     if (x[FLAG_THREADS] && !parse_int("--threads", x[FLAG_THREADS], 1, MAX_THREADS, &threads, err))
         return false;
-    return depth_flags_ok(run, x[FLAG_FORMAT], x[FLAG_MAPPING], err) &&
+    return depth_flags_ok(run, x[FLAG_FORMAT], x[FLAG_MAPPING], false, err) &&
            bias_flags_ok(x[FLAG_OFFSET], x[FLAG_CLAMP], err);
 }
 
