@@ -151,14 +151,14 @@ for bug in "" early-z-with-discard; do # close behind the first fence
 done
 echo "make-doc-images: 08_early_z done"
 
-# ---- 09_hierarchical_z: city's tile buffer, city seen from above (the city
+# ---- 09_hierarchical_z: city's tile buffer and its skips, city seen from above (the city
 # behind the wall), and the heat maps of times shaded with late-Z in
 # lessons 08 and 09 (late shades every fragment tested: the skipped ones
 # are neither tested nor shaded).
 make -s BUILD="$build" "$build/bin/09_hierarchical_z"
 l09="$build/bin/09_hierarchical_z"
 "$l09" --out "$build/09.png" --hiz-out "$images/09_tiles.png" \
-       --world-out "$images/09_world.png" >/dev/null
+       --skip-out "$images/09_skips.png" --world-out "$images/09_world.png" >/dev/null
 "$l08" --scene city --z-mode late --out "$build/08.png" \
        --shade-count-out "$images/09_heat_08.png" >/dev/null
 "$l09" --z-mode late --out "$build/09.png" --shade-count-out "$images/09_heat_09.png" >/dev/null

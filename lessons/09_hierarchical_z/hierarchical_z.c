@@ -20,7 +20,8 @@ bool hiz_begin(HierarchicalZ *h, const Target *t, int tile, Error *err)
     h->tiles_x = (t->width + tile - 1) / tile;
     h->tiles_y = (t->height + tile - 1) / tile;
     size_t n = (size_t)h->tiles_x * (size_t)h->tiles_y;
-    if (!(h->far = malloc(n * sizeof *h->far)))
+    h->far = malloc(n * sizeof *h->far), h->skipped_at = calloc(n, sizeof *h->skipped_at);
+    if (!h->far || !h->skipped_at)
         return error_set(err, "out of memory for %zu tiles", n);
     return true;
 }
@@ -67,7 +68,7 @@ float hiz_bound(const Primitive *p, int x0, int y0, int x1, int y1, bool nearest
 bool hiz_skips(HierarchicalZ *h, const DepthSetup *s, int tile, float nearest)
 {
     bool skip = farther(s, nearest, h->far[tile]);
-    h->tiles_tested++, h->tiles_skipped += skip;
+    h->tiles_tested++, h->tiles_skipped += skip, h->skipped_at[tile] += skip;
     return skip;
 }
 
@@ -79,4 +80,4 @@ void hiz_covered(HierarchicalZ *h, const DepthSetup *s, int tile, float farthest
     *far = farther(s, *far, farthest) ? farthest : *far;
 }
 
-void hiz_free(HierarchicalZ *h) { free(h->far), h->far = NULL; }
+void hiz_free(HierarchicalZ *h) { free(h->far), free(h->skipped_at); }

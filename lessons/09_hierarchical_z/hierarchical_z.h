@@ -14,6 +14,7 @@
 typedef struct HierarchicalZ {
     int tile, tiles_x, tiles_y; /* tile side in pixels; tiles across and down */
     float *far;                 /* per tile: the farthest value stored in it, or a bound */
+    unsigned *skipped_at;       /* per tile: the triangles skipped there (for a picture) */
     bool exact;                 /* --hiz-update exact: every tile drawn into read again */
     bool count_skipped;         /* count the fragments of skipped tiles (the summary) */
     unsigned long long tiles_tested, tiles_skipped, fragments_skipped, faces_skipped;

@@ -47,7 +47,7 @@ int main(int argc, char **argv)
     state.hiz = &h;
     if (!early_z_begin(&state, &run, &run.err) ||      /* the buffers; draw through them */
         !hiz_begin(&h, &run.target, tile_chosen(&run), &run.err)) { /* the tiles, --tile */
-        early_z_free(&state.early_z);
+        hiz_free(&h), early_z_free(&state.early_z);
         return run_end(&run);
     }
     run.rz->clear(&run.target, run.rz->state);         /* clear: the far plane, every tile */

@@ -29,8 +29,10 @@ int main(int argc, char **argv)
         return status;
     LessonState state = fast_chosen(&run);             /* --simd, --threads, the depth flags */
     HierarchicalZ h = {0};
-    if (!hiz_begin(&h, &run.target, BLOCK_SIZE, &run.err)) /* the tiles: one per block */
+    if (!hiz_begin(&h, &run.target, BLOCK_SIZE, &run.err)) { /* the tiles: one per block */
+        hiz_free(&h);
         return run_end(&run);
+    }
     state.hiz = &h;
     run.rasterizer.state = &state;                     /* the format, the engine, the tiles */
     run.rz->clear(&run.target, run.rz->state);         /* clear: the far plane, every tile */

@@ -19,6 +19,7 @@
 #include "test_support.h"
 
 #define PROGRAM "09_hierarchical_z"
+#define GROUP "09_hierarchical_z"
 
 static const char *const SCENES[] = {"triangles3", "interpenetrate", "cubes", "grazing",
                                      "walls", "knot", "inside", "ladder", "decals", "crowd",
@@ -154,6 +155,42 @@ static void hiz_picture_shows_the_walls_tiles(void **state)
     image_free(&im);
 }
 
+/* The default run (no flag): out/09_hierarchical_z.png, and beside it the
+ * same picture with each tile that skipped a triangle tinted. On city the
+ * wall's top rows hide nothing (pixel 300, 60: untinted, the picture's own
+ * colour) and its middle hides the city (pixel 300, 300: tinted). At 160 x
+ * 120 the skip picture is compared with one looked at by eye. */
+static void default_run_shows_where_tiles_skipped(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("l09_default");
+    const char *none[] = {NULL};
+    RunResult r = run_program_in(dir, PROGRAM, none);
+    expect_count(0, r.status, "exit status");
+    expect_line(r.out, "  wrote out/09_hierarchical_z_skips.png\n");
+    run_result_free(&r);
+    Image pic = read_png(path_join(dir, "out/09_hierarchical_z.png"));
+    Image skips = read_png(path_join(dir, "out/09_hierarchical_z_skips.png"));
+    expect_count(800, skips.width, "picture width");
+    expect_count(600 + 22, skips.height, "picture height, legend included");
+    Rgb a = image_get(&pic, 300, 60), b = image_get(&skips, 300, 60);
+    if (a.r != b.r || a.g != b.g || a.b != b.b)
+        fail_msg("pixel (300,60), the wall with nothing behind it, is tinted");
+    a = image_get(&pic, 300, 300), b = image_get(&skips, 300, 300);
+    if (a.r == b.r && a.g == b.g && a.b == b.b)
+        fail_msg("pixel (300,300), the wall with the city behind it, is not tinted: no tile "
+                 "there skipped a triangle");
+    image_free(&pic);
+    image_free(&skips);
+    Path out = in_dir(dir, "x.png"), skip = in_dir(dir, "skips.png");
+    const char *args[] = {"--width", "160", "--height", "120", "--out", out.path, "--skip-out",
+                          skip.path, NULL};
+    free(run_ok(PROGRAM, args));
+    Image im = read_png(skip.path);
+    expect_image(&im, GROUP, "skips_city");
+    image_free(&im);
+}
+
 /* Exact updating reads every tile drawn into again: never a worse bound,
  * so never more fragments tested; crowd's small faces show the difference. */
 static void exact_update_tests_no_more_than_conservative(void **state)
@@ -191,6 +228,7 @@ int main(void)
         cmocka_unit_test(every_scene_and_mode_draws_lesson_08s_pictures),
         cmocka_unit_test(any_tile_size_draws_lesson_08s_pictures),
         cmocka_unit_test(city_never_tests_nine_hidden_fragments_in_ten),
+        cmocka_unit_test(default_run_shows_where_tiles_skipped),
         cmocka_unit_test(hiz_picture_shows_the_walls_tiles),
         cmocka_unit_test(exact_update_tests_no_more_than_conservative),
         cmocka_unit_test(bad_command_lines_are_refused_with_status_2),

@@ -33,6 +33,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     state.hiz = &h;
     fuzz_draw(&s, &rz, &with, NULL);
     fuzz_check(fuzz_same_buffers(&with, &without), "the tile buffer changes no pixel");
+    unsigned long long at_tiles = 0;
+    for (int k = 0; k < h.tiles_x * h.tiles_y; k++)
+        at_tiles += h.skipped_at[k];
+    fuzz_check(at_tiles == h.tiles_skipped, "each skip counted at its tile");
     hiz_free(&h);
     target_free(&with);
     target_free(&without);

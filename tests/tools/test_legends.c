@@ -2,7 +2,8 @@
  * is as wide as its legend needs, whatever the size of the render.
  *
  * Lessons 08 and 09 write a heat map (--shade-count-out) and lesson 09 the
- * tile buffer (--hiz-out), each with a band of 22 rows under the picture.
+ * tile buffer (--hiz-out) and its skips (--skip-out), each with a band of
+ * 22 rows under the picture.
  * At 8 x 8 pixels the legend used to be drawn past the end of the image's
  * rows (a heap overflow) and, up to a width of about 240, over the picture.
  * Now, for each:
@@ -35,6 +36,7 @@ static const LegendOutput OUTPUTS[] = {
     {"08_early_z", "--shade-count-out"},
     {"09_hierarchical_z", "--shade-count-out"},
     {"09_hierarchical_z", "--hiz-out"},
+    {"09_hierarchical_z", "--skip-out"},
 };
 
 static Image run_and_read(const LegendOutput *o, const char *size, const char *dir)

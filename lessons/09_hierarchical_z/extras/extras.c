@@ -11,8 +11,11 @@
 #include "harness/compare_naive.h"
 #include "harness/font.h"
 
-enum { FLAG_TILE, FLAG_HIZ_UPDATE, FLAG_HIZ_OUT, FLAG_Z_MODE, FLAG_SORT, FLAG_BUG, FLAG_COLOUR_OUT, FLAG_HEAT_OUT,
-       FLAG_COUNT };
+enum { FLAG_TILE, FLAG_HIZ_UPDATE, FLAG_HIZ_OUT, FLAG_SKIP_OUT, FLAG_Z_MODE, FLAG_SORT, FLAG_BUG,
+       FLAG_COLOUR_OUT, FLAG_HEAT_OUT, FLAG_COUNT };
+
+/* Where the default run (no --out) also puts --skip-out's picture. */
+#define DEFAULT_SKIP_OUT "out/09_hierarchical_z_skips.png"
 
 static const LessonFlag FLAGS[FLAG_COUNT] = {
     [FLAG_TILE] = {"--tile", "N", "the side of a tile of the hierarchical Z, in pixels, 1 to 64 "
@@ -23,6 +26,10 @@ static const LessonFlag FLAGS[FLAG_COUNT] = {
     [FLAG_HIZ_OUT] = {"--hiz-out", "FILE.png", "the tile buffer: each tile in the grey of the "
                                                "farthest depth it holds, with a legend",
                       .output = true},
+    [FLAG_SKIP_OUT] = {"--skip-out", "FILE.png",
+                       "the picture, each tile tinted by how many triangles it skipped, with a "
+                       "legend (the default run: " DEFAULT_SKIP_OUT ")",
+                       .output = true},
     [FLAG_Z_MODE] = {"--z-mode", "M", "late (shade, then test), early (the default: test, then "
                                       "shade what passed) or prepass (depth first, then shade "
                                       "where equal)"},
@@ -58,11 +65,12 @@ static bool after_write(Run *run, Error *err)
 {
     const EarlyZ *z = &run->rz->state->early_z;
     const char *colour = run->opt.extra[FLAG_COLOUR_OUT], *heat = run->opt.extra[FLAG_HEAT_OUT];
-    const char *hiz = run->opt.extra[FLAG_HIZ_OUT];
+    const char *hiz = run->opt.extra[FLAG_HIZ_OUT], *skips = run->opt.extra[FLAG_SKIP_OUT];
     int w = run->target.width, h = run->target.height;
     return (!colour || write_colour(z, w, h, colour, err)) &&
            (!heat || write_heat_map(z->shade_count, w, h, heat, err)) &&
-           (!hiz || write_hiz_picture(&run->target, run->rz->state, hiz, err));
+           (!hiz || write_hiz_picture(&run->target, run->rz->state, hiz, err)) &&
+           (!skips || write_skip_picture(&run->render, &run->target, run->rz->state, skips, err));
 }
 
 static bool choose(Run *run, Error *err)
@@ -77,6 +85,8 @@ static bool choose(Run *run, Error *err)
                          x[FLAG_HIZ_UPDATE]);
     if (!early_z_flags_ok(run, x[FLAG_Z_MODE], x[FLAG_SORT], x[FLAG_BUG], err))
         return false;
+    if (run->opt.out == run->default_out && !x[FLAG_SKIP_OUT]) /* no --out: the default run */
+        run->opt.extra[FLAG_SKIP_OUT] = DEFAULT_SKIP_OUT;
     run->after_write = after_write;
     return true;
 }

@@ -1,5 +1,6 @@
 /* extras.h: what lesson 09 shows but does not teach (docs/09_hierarchical_z.md):
- *   --tile, --hiz-update, --hiz-out (the tile buffer as a picture), and
+ *   --tile, --hiz-update, --hiz-out (the tile buffer as a picture), --skip-out
+ *   (where the tiles skipped triangles, written by the default run too), and
  *   lesson 08's flags, shader, heat map and plumbing (fragments.c). */
 #ifndef EXTRAS_H
 #define EXTRAS_H
@@ -30,5 +31,8 @@ void early_z_free(EarlyZ *z);
 
 #define HIZ_LEGEND_HEIGHT 22 /* --hiz-out, each tile in the grey of its farthest d */
 bool write_hiz_picture(const Target *t, const LessonState *s, const char *path, Error *err);
+/* --skip-out: the picture (flat colours), each tile tinted by the triangles it skipped. */
+bool write_skip_picture(const Render *r, const Target *t, const LessonState *s, const char *path,
+                        Error *err);
 
 #endif

@@ -92,3 +92,65 @@ bool write_hiz_picture(const Target *t, const LessonState *s, const char *path, 
     image_free(&im);
     return ok;
 }
+
+/* --skip-out: tiles by how many triangles they skipped, 1, 2+, 4+, ... 64+. */
+#define SKIP_CLASSES 7
+static const Rgb SKIP_COLOUR[SKIP_CLASSES] = {
+    {255, 250, 170}, {250, 190, 40}, {240, 120, 30}, {215, 50, 40},
+    {170, 30, 110},  {110, 40, 170}, {40, 60, 200},
+};
+
+static int skip_class(unsigned n) /* n > 0: floor(log2 n), at most the last class */
+{
+    int c = 0;
+    while (n > 1 && c < SKIP_CLASSES - 1)
+        n /= 2, c++;
+    return c;
+}
+
+static void draw_skip_legend(LegendBand *b, const void *ctx)
+{
+    Rgb white = {255, 255, 255};
+    (void)ctx;
+    legend_text(b, "triangles a tile skipped:", white);
+    legend_gap(b, 6);
+    for (int k = 0; k < SKIP_CLASSES; k++) {
+        char label[8];
+        snprintf(label, sizeof label, k ? "%d+" : "%d", 1 << k);
+        legend_swatch(b, SKIP_COLOUR[k], 10, 10, false);
+        legend_gap(b, 3);
+        legend_text(b, label, white);
+        legend_gap(b, 8);
+    }
+    legend_text(b, "(untinted: none)", white);
+}
+
+/* The picture in flat colours; over a tile that skipped any triangle, its
+ * class's colour at two thirds, and its last column and row darker. */
+bool write_skip_picture(const Render *r, const Target *t, const LessonState *s, const char *path,
+                        Error *err)
+{
+    const HierarchicalZ *h = s->hiz;
+    Image pic, im;
+    if (!shade_image(&r->mesh, &r->camera, t->face, NULL, t->width, t->height, SHADE_FLAT, &pic,
+                     err))
+        return false;
+    for (int y = 0; y < t->height; y++)
+        for (int x = 0; x < t->width; x++) {
+            unsigned n = h->skipped_at[y / h->tile * h->tiles_x + x / h->tile];
+            if (n == 0)
+                continue;
+            Rgb c = image_get(&pic, x, y), k = SKIP_COLOUR[skip_class(n)];
+            Rgb mix = {(uint8_t)((c.r + 2 * k.r) / 3), (uint8_t)((c.g + 2 * k.g) / 3),
+                       (uint8_t)((c.b + 2 * k.b) / 3)};
+            bool edge = h->tile > 2 && (x % h->tile == h->tile - 1 || y % h->tile == h->tile - 1);
+            image_set(&pic, x, y, edge ? darker(mix) : mix);
+        }
+    bool ok = image_with_legend(&im, &pic, HIZ_LEGEND_HEIGHT, draw_skip_legend, NULL, err);
+    image_free(&pic);
+    if (!ok)
+        return false;
+    ok = render_make_parent_dirs(path, err) && image_write_png(&im, path, err);
+    image_free(&im);
+    return ok;
+}
