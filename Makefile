@@ -146,12 +146,14 @@ $(BUILD)/tests/%: $(BUILD)/obj/tests/%.o $(COMMON_OBJ) $(SUPPORT_OBJ) \
 
 # Every fuzz target of tests/fuzz/ built with the ordinary compiler and
 # tests/fuzz/replay.c in place of libFuzzer: make test runs each on its
-# committed seeds (tests/tools/test_fuzz_seeds.c). Not with LESSON=, nor
+# committed seeds (tests/tools/test_fuzz_seeds.c). A target fuzz_flags_NN_name
+# links lesson NN_name, as fuzz_NN_name does (fuzz_lesson). Not with LESSON=, nor
 # where that test is not (a handout).
+fuzz_lesson = $(patsubst flags_%,%,$(1))
 FUZZ_REPLAY := $(if $(LESSON)$(if $(wildcard tests/tools/test_fuzz_seeds.c),,no),,$(patsubst tests/fuzz/fuzz_%.c,$(BUILD)/fuzz-replay/fuzz_%,\
                                  $(wildcard tests/fuzz/fuzz_*.c)))
 $(BUILD)/fuzz-replay/fuzz_%: $(BUILD)/obj/tests/fuzz/fuzz_%.o $(BUILD)/obj/tests/fuzz/replay.o \
-                             $(COMMON_OBJ) $$(call lesson_objs,$$*)
+                             $(COMMON_OBJ) $$(call lesson_objs,$$(call fuzz_lesson,$$*))
 	@mkdir -p $(@D)
 	$(LINK) $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 
@@ -322,9 +324,9 @@ fuzz:
 fuzz-build: $(FUZZ_RUN:%=$(BUILD)/fuzz/fuzz_%)
 
 # ($* is the stem of the object rule: tests/fuzz/fuzz_<name>)
-$(BUILD)/obj/tests/fuzz/fuzz_%.o: OBJ_INCLUDES += -I$(LESSON_TREE)/$(patsubst tests/fuzz/fuzz_%,%,$*) \
-                                             -I$(LESSON_TREE)/$(patsubst tests/fuzz/fuzz_%,%,$*)/extras
-$(BUILD)/fuzz/fuzz_%: $(BUILD)/obj/tests/fuzz/fuzz_%.o $(COMMON_OBJ) $$(call lesson_objs,$$*)
+$(BUILD)/obj/tests/fuzz/fuzz_%.o: OBJ_INCLUDES += -I$(LESSON_TREE)/$(call fuzz_lesson,$(patsubst tests/fuzz/fuzz_%,%,$*)) \
+                                             -I$(LESSON_TREE)/$(call fuzz_lesson,$(patsubst tests/fuzz/fuzz_%,%,$*))/extras
+$(BUILD)/fuzz/fuzz_%: $(BUILD)/obj/tests/fuzz/fuzz_%.o $(COMMON_OBJ) $$(call lesson_objs,$$(call fuzz_lesson,$$*))
 	@mkdir -p $(@D)
 	$(LINK) -fsanitize=fuzzer $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 

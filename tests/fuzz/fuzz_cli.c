@@ -19,6 +19,8 @@
 #include "harness/cli.h"
 #include "harness/image_io.h"
 
+#include "fuzz_quiet.h"
+
 #define MAX_ARGS 64
 
 static const LessonFlag EXTRA[] = {
@@ -45,17 +47,6 @@ static void check(bool ok, const char *what)
         fprintf(stderr, "fuzz_cli: broken invariant: %s\n", what);
         abort();
     }
-}
-
-int LLVMFuzzerInitialize(int *argc, char ***argv);
-int LLVMFuzzerInitialize(int *argc, char ***argv)
-{
-    (void)argc;
-    (void)argv;
-    /* --help and --version print on stdout: keep the fuzzer's output readable. */
-    if (!freopen("/dev/null", "w", stdout))
-        abort();
-    return 0;
 }
 
 static bool vec_finite(Vec3 v)
