@@ -496,3 +496,37 @@ $(BENCH_DIR)/bench_%: $(BENCH_DIR)/obj/bench_%.o $$(call bench_lesson_objs,$$*) 
 
 -include $(shell find $(BENCH_DIR)/obj -name '*.d' 2>/dev/null)
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
+
+# ---- The book ----------------------------------------------------------------
+# make site        every page as HTML in build/site/ (tools/site/build.sh):
+#                  a sidebar in reading order, previous and next, a table of
+#                  contents per page, a search index, two themes, code
+#                  highlighted as it is built; pandoc installed if missing
+# make site-serve  serves it on http://127.0.0.1:8000/ (PORT=N for another)
+# make site-test   opens every page in Debian's chromium, driven by
+#                  playwright-core (tools/site/test/): no error, no broken
+#                  link or picture, the search and the theme work
+# These install what they need (pandoc, chromium, node and npm's package,
+# into build/site-node/) as they run; make run and make test never do.
+SITE_DIR  := $(BUILD)/site
+SITE_NODE := $(BUILD)/site-node
+.PHONY: site site-serve site-test
+site:
+	@sh tools/ensure-deps.sh pandoc
+	@sh tools/site/build.sh $(SITE_DIR)
+
+site-serve: site
+	@sh tools/ensure-deps.sh node:nodejs
+	@node tools/site/serve.js $(SITE_DIR) $(or $(PORT),8000)
+
+$(SITE_NODE)/node_modules/playwright-core/package.json: tools/site/test/package.json \
+                                                        tools/site/test/package-lock.json
+	@sh tools/ensure-deps.sh node:nodejs npm:npm
+	@mkdir -p $(SITE_NODE)
+	@cp tools/site/test/package.json tools/site/test/package-lock.json $(SITE_NODE)/
+	@cd $(SITE_NODE) && npm ci --no-audit --no-fund --loglevel=error
+	@touch $@
+
+site-test: site $(SITE_NODE)/node_modules/playwright-core/package.json
+	@sh tools/ensure-deps.sh chromium
+	@node tools/site/test/site_test.js $(SITE_DIR) $(SITE_NODE)/node_modules

@@ -27,8 +27,9 @@
 #
 # Commands that take minutes are not run but dry-run with make -n (the target
 # exists and make knows how to build what it needs): make test, make grade and
-# make update-expected without TEST=, make bench, sanitize, tsan, fuzz, valgrind and
-# compile_commands.json, and the programs of build/bench/ (made by make bench).
+# make update-expected without TEST=, make bench, sanitize, tsan, fuzz, valgrind,
+# compile_commands.json and the book's targets (make site, site-serve, site-test),
+# and the programs of build/bench/ (made by make bench).
 #
 # A command that only reads the build and writes nothing in the tree (the
 # list in read_only_of below: make gpu-check, the slowest one) runs once even
@@ -172,10 +173,11 @@ matches() { # expected-file actual-file
 }
 
 # make test, grade, update-expected without TEST=, and the long targets
-# (bench, sanitize, tsan, fuzz, valgrind): make -n.
+# (bench, sanitize, tsan, fuzz, valgrind, and the book's, which install
+# pandoc and chromium): make -n.
 dry_run_of() { # command -> the make -n line to run instead, or nothing
     case $1 in
-        make*bench*|make*sanitize*|make*tsan*|make*fuzz*|make*valgrind*|make*compile_commands.json*)
+        make*bench*|make*sanitize*|make*tsan*|make*fuzz*|make*valgrind*|make*compile_commands.json*|make\ site*)
             echo "make -n ${1#make }" ;;
         make\ grade*)
             echo "make -n ${1#make }" ;;

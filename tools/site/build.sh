@@ -1,0 +1,109 @@
+#!/bin/sh
+# build.sh: the book, an HTML site of the series' pages (make site).
+#
+#   sh tools/site/build.sh [SITE_DIR]      (from the top of the tree; default build/site)
+#
+# Every page is written once, as Markdown: README.md becomes index.html,
+# docs/X.md docs/X.html, lessons/NN/README.md lessons/NN/index.html. The site
+# keeps the tree's layout, so the pages' relative links hold; the pictures,
+# diffs, examples and the lessons' files they link to are copied beside
+# them. pandoc (tools/site/links.lua) turns links to pages into links to
+# their HTML, highlights code as it builds, and writes each page's sections
+# for the search index (search-index.js). The sidebar lists the book in
+# reading order: the lessons, then the reference pages; each page links the
+# one before and after it.
+set -eu
+site=${1:-build/site}
+here=tools/site
+rm -rf "$site"
+mkdir -p "$site/docs" "$site/search"
+
+# The book in reading order: source, then its title in the sidebar.
+book="README.md|Introduction"
+for f in docs/[0-9][0-9]_*.md; do
+    n=$(basename "$f" .md)
+    book="$book
+$f|$(sed -n '1s/^# Lesson \([0-9]*\): /\1 /p' "$f")"
+done
+for f in conventions tools robustness performance teaching; do
+    book="$book
+docs/$f.md|$(sed -n '1s/^# //p' "docs/$f.md")"
+done
+
+html_of() { # a page's source -> its path in the site
+    case $1 in
+        README.md) echo index.html ;;
+        */README.md) echo "${1%README.md}index.html" ;;
+        *) echo "${1%.md}.html" ;;
+    esac
+}
+
+root_of() { # a path in the site -> the way up to the site's top
+    printf '%s\n' "$1" | awk -F/ '{ s = ""; for (i = 1; i < NF; i++) s = s "../"; print s }'
+}
+
+# The sidebar, its links from the top of the site (ROOT stands for the way up).
+nav=$(printf '%s\n' "$book" | awk -F'|' -v lessons=0 '
+    function esc(s) { gsub(/&/, "\\&amp;", s); gsub(/</, "\\&lt;", s); return s }
+    {
+        url = $1; sub(/^README\.md$/, "index.html", url); sub(/\.md$/, ".html", url)
+        if ($1 ~ /docs\/[0-9][0-9]_/ && !lessons) { print "<p class=\"nav-group\">Lessons</p>"; lessons = 1 }
+        if ($1 ~ /docs\/conventions/) print "<p class=\"nav-group\">Reference</p>"
+        printf "<a href=\"ROOT%s\" data-page=\"%s\">%s</a>\n", url, url, esc($2)
+    }')
+
+page() { # source prev_source next_source
+    src=$1 prev_src=$2 next_src=$3
+    out=$(html_of "$src")
+    root=$(root_of "$out")
+    title=$(sed -n '1s/^# //p' "$src")
+    [ -n "$title" ] || title=$(basename "$src" .md)
+    set -- --from gfm --to html5 --standalone --template "$here/template.html" \
+        --toc --toc-depth 2 --highlight-style pygments --lua-filter "$here/links.lua" \
+        --metadata "pagetitle=$title" --metadata "page_url=$out" \
+        --metadata "search_out=$site/search/$(printf '%s' "$out" | tr / _).json" \
+        --variable "root=$root" \
+        --variable "nav=$(printf '%s\n' "$nav" | sed "s#ROOT#$root#g; s#data-page=\"$out\"#data-page=\"$out\" aria-current=\"page\"#")"
+    if [ -n "$prev_src" ]; then
+        set -- "$@" --variable "prev_url=$root$(html_of "$prev_src")" \
+            --variable "prev_title=$(sed -n '1s/^# //p' "$prev_src")"
+    fi
+    if [ -n "$next_src" ]; then
+        set -- "$@" --variable "next_url=$root$(html_of "$next_src")" \
+            --variable "next_title=$(sed -n '1s/^# //p' "$next_src")"
+    fi
+    mkdir -p "$site/$(dirname "$out")"
+    pandoc "$@" -o "$site/$out" "$src"
+}
+
+# The book's pages, each with the one before and after it.
+sources=$(printf '%s\n' "$book" | cut -d'|' -f1)
+prev=""
+set -f
+for src in $sources; do
+    next=$(printf '%s\n' "$sources" | awk -v s="$src" 'found { print; exit } $0 == s { found = 1 }')
+    page "$src" "$prev" "$next"
+    prev=$src
+done
+set +f
+# The lessons' own pages (what each inherits, and from where), outside the
+# reading order, and the files they and the pages link to.
+for readme in lessons/*/README.md; do
+    page "$readme" "" ""
+    cp -p "$(dirname "$readme")"/*.[ch] "$site/$(dirname "$readme")/" 2>/dev/null || true
+    if [ -d "$(dirname "$readme")/extras" ]; then
+        mkdir -p "$site/$(dirname "$readme")/extras"
+        cp -p "$(dirname "$readme")"/extras/*.[ch] "$site/$(dirname "$readme")/extras/" 2>/dev/null || true
+    fi
+done
+for d in images diffs examples data; do
+    [ -d "docs/$d" ] && cp -Rp "docs/$d" "$site/docs/"
+done
+cp -p "$here/site.css" "$here/site.js" "$site/"
+{
+    printf 'window.SEARCH_INDEX = [\n'
+    cat "$site"/search/*.json | sed 's/$/,/'
+    printf '];\n'
+} > "$site/search-index.js"
+rm -rf "$site/search"
+echo "site: $(find "$site" -name '*.html' | wc -l) pages in $site"

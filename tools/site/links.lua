@@ -1,0 +1,80 @@
+-- links.lua: the pandoc filter of the book (tools/site/build.sh).
+--
+-- Links: a link to a page of the series (X.md, README.md) goes to the page
+-- the book makes of it (X.html, index.html), its #fragment kept; every
+-- other link stays as it is, since the book keeps the tree's layout
+-- (docs/, docs/images/, lessons/NN/ ...) and copies what the pages link to.
+--
+-- Search: each section of the page (its title, and every heading of level
+-- 2 with the text under it) goes to the file named by the metadata field
+-- search_out, as one JSON object a line: {"page", "title", "id", "text"}.
+
+local function html_of(target)
+  if target:match("^%a[%w+.-]*:") then -- http:, https:, mailto: ...
+    return target
+  end
+  local path, fragment = target:match("^([^#]*)(#?.*)$")
+  if path:match("README%.md$") then
+    return path:gsub("README%.md$", "index.html") .. fragment
+  end
+  if path:match("%.md$") then
+    return path:gsub("%.md$", ".html") .. fragment
+  end
+  return target
+end
+
+function Link(el)
+  el.target = html_of(el.target)
+  return el
+end
+
+local function json_string(s)
+  s = s:gsub('[%c"\\]', function(c)
+    if c == '"' then return '\\"' end
+    if c == "\\" then return "\\\\" end
+    if c == "\n" then return "\\n" end
+    if c == "\t" then return "\\t" end
+    return string.format("\\u%04x", c:byte())
+  end)
+  return '"' .. s .. '"'
+end
+
+-- A block as plain text, list items and table cells apart.
+local function plain_text(block)
+  local ok, text = pcall(pandoc.write, pandoc.Pandoc({block}), "plain")
+  if not ok then
+    return pandoc.utils.stringify(block)
+  end
+  return (text:gsub("%s+", " "))
+end
+
+function Pandoc(doc)
+  local out_path = doc.meta.search_out and pandoc.utils.stringify(doc.meta.search_out)
+  local page = doc.meta.page_url and pandoc.utils.stringify(doc.meta.page_url) or ""
+  if not out_path or out_path == "" then
+    return doc
+  end
+  local sections, current = {}, nil
+  local function start(title, id)
+    current = {title = title, id = id, text = {}}
+    table.insert(sections, current)
+  end
+  for _, block in ipairs(doc.blocks) do
+    if block.t == "Header" and block.level <= 2 then
+      start(pandoc.utils.stringify(block.content), block.identifier)
+    elseif current == nil then
+      start(page, "")
+    end
+    if block.t ~= "Header" and block.t ~= "CodeBlock" and block.t ~= "RawBlock" then
+      table.insert(current.text, plain_text(block))
+    end
+  end
+  local f = assert(io.open(out_path, "w"))
+  for _, s in ipairs(sections) do
+    f:write("{\"page\":", json_string(page), ",\"title\":", json_string(s.title),
+            ",\"id\":", json_string(s.id), ",\"text\":",
+            json_string(table.concat(s.text, " ")), "}\n")
+  end
+  f:close()
+  return doc
+end
