@@ -36,7 +36,8 @@ override WARN := -std=c11 -Wall -Wextra $(if $(filter 1,$(GRADE_WARNINGS_SHOWN))
                  -Wshadow -Wconversion -Wmissing-prototypes
 override REQUIRED_CFLAGS   := $(WARN) -ffp-contract=off
 override REQUIRED_CPPFLAGS := -D_POSIX_C_SOURCE=200809L -Icommon
-override REQUIRED_LDLIBS   := -lm -pthread
+# (With emcc, make wasm's compiler, no -pthread: the browser build has one thread.)
+override REQUIRED_LDLIBS   := -lm $(if $(filter emcc%,$(notdir $(CC))),,-pthread)
 # What make sanitize and make fuzz add to every compile and link, and what
 # make fuzz adds after the warnings.
 MODE_CFLAGS :=
@@ -497,6 +498,33 @@ $(BENCH_DIR)/bench_%: $(BENCH_DIR)/obj/bench_%.o $$(call bench_lesson_objs,$$*) 
 -include $(shell find $(BENCH_DIR)/obj -name '*.d' 2>/dev/null)
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
 
+# ---- The lessons in the browser -----------------------------------------------
+# make wasm: every lesson compiled to WebAssembly by Debian's emscripten (installed
+# if missing), from the same files as the native build, into build/wasm/bin/NN
+# (the JavaScript that loads it, a module factory) and NN.wasm. The build has
+# one thread (no -pthread with emcc; lesson 10 says so) and no x86 SIMD; it has
+# no zlib either, so its PNGs are written in stored deflate blocks
+# (tools/site/wasm/: zlib.h, zlib_stored.c), larger files with the same pixels,
+# and stb_image is compiled from Debian's header. tools/site/wasm/run.js runs a
+# lesson under node; make site-test compares it with the native one.
+WASM_BUILD   := build/wasm
+WASM_SHIM    := $(WASM_BUILD)/obj/shim/stb_image.o $(WASM_BUILD)/obj/shim/zlib_stored.o
+WASM_LDFLAGS := -sMODULARIZE=1 -sEXPORT_NAME=Lesson -sINVOKE_RUN=0 -sALLOW_MEMORY_GROWTH=1 \
+                -sEXIT_RUNTIME=1 -sFORCE_FILESYSTEM=1 -sEXPORTED_RUNTIME_METHODS=callMain,FS \
+                -sEXPORTED_FUNCTIONS=_main,_umask -sENVIRONMENT=web,worker,node
+.PHONY: wasm
+wasm:
+	@sh tools/ensure-deps.sh emcc:emscripten node:nodejs
+	@$(MAKE) --no-print-directory $(WASM_SHIM)
+	@NODE_PATH=/usr/share/nodejs $(MAKE) --no-print-directory BUILD=$(WASM_BUILD) CC=emcc \
+	    OPT=-O2 MODE_WARN=-Wno-missing-field-initializers LDLIBS= LDFLAGS="$(WASM_LDFLAGS)" \
+	    STB_CFLAGS="-Itools/site/wasm $$(pkg-config --cflags stb)" STB_LIBS="$(WASM_SHIM)" \
+	    $(LESSONS:%=$(WASM_BUILD)/bin/%)
+
+$(WASM_BUILD)/obj/shim/%.o: tools/site/wasm/%.c tools/site/wasm/zlib.h
+	@mkdir -p $(@D)
+	emcc -O2 -Itools/site/wasm $$(pkg-config --cflags stb) -c $< -o $@
+
 # ---- The book ----------------------------------------------------------------
 # make site        every page as HTML in build/site/ (tools/site/build.sh):
 #                  a sidebar in reading order, previous and next, a table of
@@ -505,9 +533,12 @@ $(BENCH_DIR)/bench_%: $(BENCH_DIR)/obj/bench_%.o $$(call bench_lesson_objs,$$*) 
 # make site-serve  serves it on http://127.0.0.1:8000/ (PORT=N for another)
 # make site-test   opens every page in Debian's chromium, driven by
 #                  playwright-core (tools/site/test/): no error, no broken
-#                  link or picture, the search and the theme work
-# These install what they need (pandoc, chromium, node and npm's package,
-# into build/site-node/) as they run; make run and make test never do.
+#                  link or picture, the search and the theme work; then runs
+#                  every lesson's default run and the pages' lesson commands
+#                  in the browser build (make wasm) under node, against the
+#                  native build (tools/site/test/wasm_test.js)
+# These install what they need (pandoc, emscripten, chromium, node and npm's
+# package, into build/site-node/) as they run; make run and make test never do.
 SITE_DIR  := $(BUILD)/site
 SITE_NODE := $(BUILD)/site-node
 .PHONY: site site-serve site-test
@@ -527,6 +558,7 @@ $(SITE_NODE)/node_modules/playwright-core/package.json: tools/site/test/package.
 	@cd $(SITE_NODE) && npm ci --no-audit --no-fund --loglevel=error
 	@touch $@
 
-site-test: site $(SITE_NODE)/node_modules/playwright-core/package.json
+site-test: site wasm $(BINS) $(SITE_NODE)/node_modules/playwright-core/package.json
 	@sh tools/ensure-deps.sh chromium
 	@node tools/site/test/site_test.js $(SITE_DIR) $(SITE_NODE)/node_modules
+	@node tools/site/test/wasm_test.js $(BUILD)/bin $(WASM_BUILD)/bin $(BUILD)/test-output/wasm

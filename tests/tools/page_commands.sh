@@ -28,7 +28,7 @@
 # Commands that take minutes are not run but dry-run with make -n (the target
 # exists and make knows how to build what it needs): make test, make grade and
 # make update-expected without TEST=, make bench, sanitize, tsan, fuzz, valgrind,
-# compile_commands.json and the book's targets (make site, site-serve, site-test),
+# compile_commands.json and the book's targets (make site, site-serve, site-test, wasm),
 # and the programs of build/bench/ (made by make bench).
 #
 # A command that only reads the build and writes nothing in the tree (the
@@ -177,7 +177,7 @@ matches() { # expected-file actual-file
 # pandoc and chromium): make -n.
 dry_run_of() { # command -> the make -n line to run instead, or nothing
     case $1 in
-        make*bench*|make*sanitize*|make*tsan*|make*fuzz*|make*valgrind*|make*compile_commands.json*|make\ site*)
+        make*bench*|make*sanitize*|make*tsan*|make*fuzz*|make*valgrind*|make*compile_commands.json*|make\ site*|make\ wasm*)
             echo "make -n ${1#make }" ;;
         make\ grade*)
             echo "make -n ${1#make }" ;;

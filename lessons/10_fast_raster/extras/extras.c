@@ -14,6 +14,11 @@
 enum { FLAG_SIMD, FLAG_THREADS, FLAG_FORMAT, FLAG_MAPPING, FLAG_OFFSET, FLAG_CLAMP, FLAG_COUNT };
 
 #define MAX_THREADS 256
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+#define BUILD_THREADS 1 /* the browser's build (make wasm) has no threads */
+#else
+#define BUILD_THREADS MAX_THREADS
+#endif
 
 static const LessonFlag FLAGS[FLAG_COUNT] = {
     [FLAG_SIMD] = {"--simd", "S", "none (plain C), sse2 or avx2: how many pixels of a block "
@@ -66,7 +71,7 @@ static int find_name(const char *name, const char *const *names, int n)
 static int cores(void)
 {
     long n = sysconf(_SC_NPROCESSORS_ONLN);
-    return n < 1 ? 1 : n > MAX_THREADS ? MAX_THREADS : (int)n;
+    return n < 1 ? 1 : n > BUILD_THREADS ? BUILD_THREADS : (int)n;
 }
 
 LessonState fast_chosen(const Run *run)
@@ -98,6 +103,9 @@ static bool choose(Run *run, Error *err)
                          SIMD_NAMES[simd_best()]);
     if (x[FLAG_THREADS] && !parse_int("--threads", x[FLAG_THREADS], 1, MAX_THREADS, &threads, err))
         return false;
+    if (x[FLAG_THREADS] && threads > BUILD_THREADS)
+        return error_set(err, "--threads %ld: this build runs on one thread (the browser's has "
+                              "no threads)", threads);
     return depth_flags_ok(run, x[FLAG_FORMAT], x[FLAG_MAPPING], false, err) &&
            bias_flags_ok(x[FLAG_OFFSET], x[FLAG_CLAMP], err);
 }

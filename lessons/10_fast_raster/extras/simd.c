@@ -23,13 +23,6 @@ static uint64_t plain_coverage(const int32_t *g, const int32_t *a, const int32_t
     return mask;
 }
 
-static bool every_row(uint64_t mask) /* a pixel in each: the kernel read the whole block */
-{
-    uint64_t rows = mask | mask >> 4;
-    rows |= rows >> 2, rows |= rows >> 1;
-    return (rows & 0x0101010101010101ull) == 0x0101010101010101ull;
-}
-
 static float plain_farthest(const float *depth, size_t stride, bool reversed)
 {
     float far = depth[0];
@@ -63,7 +56,6 @@ static uint64_t plain_depth_test(float *depth, int32_t *face, size_t stride, int
     return passed;
 }
 
-
 const BlockKernels PLAIN_KERNELS = {plain_coverage, plain_depth_test, plain_farthest};
 
 #if defined(__x86_64__)
@@ -71,6 +63,12 @@ const BlockKernels PLAIN_KERNELS = {plain_coverage, plain_depth_test, plain_fart
 
 #define ROW(mask, j) ((int)((mask) >> (8 * (j)) & 0xff)) /* row j's 8 bits */
 
+static bool every_row(uint64_t mask) /* a pixel in each: the kernel read the whole block */
+{
+    uint64_t rows = mask | mask >> 4;
+    rows |= rows >> 2, rows |= rows >> 1;
+    return (rows & 0x0101010101010101ull) == 0x0101010101010101ull;
+}
 
 /* ---- SSE2: a block row is two registers of 4 ---------------------------- */
 

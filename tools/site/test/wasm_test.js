@@ -1,0 +1,138 @@
+// wasm_test.js: the lessons' browser build (make wasm) against the native
+// build, under node (make site-test runs it). For each lesson's default run,
+// and each command of a lesson that the pages show (a line of a sh or
+// console block that runs build/bin/NN with no shell around it), both
+// builds run in a directory of their own that holds the same files (the
+// pages' examples, and out/ as make run leaves it, made here), and must agree: the same
+// status, the same text printed, the same files written; pictures with the
+// same size and pixels (the browser build writes its PNGs uncompressed),
+// every other file byte for byte. A command the browser build cannot run as
+// the native one does (lesson 10 on more than one thread, or with x86 SIMD)
+// must be refused there in one line with status 2, and is listed.
+//
+//   node tools/site/test/wasm_test.js BIN_DIR WASM_BIN_DIR WORK_DIR
+"use strict";
+const fs = require("fs");
+const path = require("path");
+const zlib = require("zlib");
+const {spawnSync} = require("child_process");
+const {runLesson, filesUnder} = require("../wasm/run.js");
+
+const [bin, wasmBin, work] = process.argv.slice(2).map((p) => path.resolve(p));
+let passed = 0, failed = 0;
+function check(ok, what) {
+  if (ok) passed++;
+  else { failed++; console.log("FAIL: " + what); }
+}
+
+// A PNG's size and RGB pixels (8-bit RGB, no interlace: what the lessons write).
+function pngPixels(buf) {
+  let i = 8, w = 0, h = 0;
+  const idat = [];
+  while (i < buf.length) {
+    const n = buf.readUInt32BE(i), type = buf.toString("latin1", i + 4, i + 8);
+    if (type === "IHDR") { w = buf.readUInt32BE(i + 8); h = buf.readUInt32BE(i + 12); }
+    if (type === "IDAT") idat.push(buf.subarray(i + 8, i + 8 + n));
+    i += 12 + n;
+  }
+  const raw = zlib.inflateSync(Buffer.concat(idat)), stride = w * 3, px = Buffer.alloc(stride * h);
+  for (let y = 0; y < h; y++) {
+    const f = raw[y * (stride + 1)], row = raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1));
+    for (let x = 0; x < stride; x++) {
+      const a = x >= 3 ? px[y * stride + x - 3] : 0, b = y ? px[(y - 1) * stride + x] : 0;
+      const c = x >= 3 && y ? px[(y - 1) * stride + x - 3] : 0;
+      let p = 0;
+      if (f === 1) p = a; else if (f === 2) p = b; else if (f === 3) p = (a + b) >> 1;
+      else if (f === 4) {
+        const q = a + b - c, pa = Math.abs(q - a), pb = Math.abs(q - b), pc = Math.abs(q - c);
+        p = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
+      }
+      px[y * stride + x] = (row[x] + p) & 255;
+    }
+  }
+  return {w, h, px};
+}
+
+function sameFile(name, a, b) {
+  if (name.endsWith(".png")) {
+    const pa = pngPixels(Buffer.from(a)), pb = pngPixels(Buffer.from(b));
+    return pa.w === pb.w && pa.h === pb.h && Buffer.compare(pa.px, pb.px) === 0;
+  }
+  return Buffer.compare(Buffer.from(a), Buffer.from(b)) === 0;
+}
+
+// The pages' commands of lesson programs: [lesson, args].
+function pageCommands() {
+  const out = [];
+  for (const page of fs.readdirSync("docs").filter((f) => /^\d\d_.*\.md$/.test(f)).sort()) {
+    let lang = null;
+    for (const line of fs.readFileSync(path.join("docs", page), "utf8").split("\n")) {
+      const fence = line.match(/^```(\w*)/);
+      if (fence) { lang = lang === null ? fence[1] : null; continue; }
+      if (lang !== "sh" && lang !== "console") continue;
+      let cmd = lang === "console" ? (line.startsWith("$ ") ? line.slice(2) : null) : line;
+      if (!cmd) continue;
+      cmd = cmd.replace(/\s+#.*$/, "").trim();
+      const m = cmd.match(/^build\/bin\/(\d\d_\w+)((?:\s+[^\s|&;<>()$`\\'"*?]+)*)$/);
+      if (m) out.push({where: page, lesson: m[1], args: m[2].trim() ? m[2].trim().split(/\s+/) : []});
+    }
+  }
+  return out;
+}
+
+// The files every run starts from: the pages' examples, and out/ as make run
+// leaves it (each lesson's default run, natively, in a directory of its own).
+const lessons = fs.readdirSync(wasmBin).filter((f) => /^\d\d_\w+$/.test(f)).sort();
+const staging = path.join(work, "make-run");
+fs.rmSync(staging, {recursive: true, force: true});
+fs.mkdirSync(staging, {recursive: true});
+for (const l of lessons) spawnSync(path.join(bin, l), [], {cwd: staging});
+const base = filesUnder("docs/examples", "docs/examples/").concat(filesUnder(path.join(staging, "out"), "out/"));
+let runs = 0;
+function freshDir() {
+  const d = path.join(work, String(runs++));
+  fs.rmSync(d, {recursive: true, force: true});
+  for (const [rel, bytes] of base) {
+    fs.mkdirSync(path.dirname(path.join(d, rel)), {recursive: true});
+    fs.writeFileSync(path.join(d, rel), bytes);
+  }
+  return d;
+}
+
+async function compare(lesson, args, where) {
+  const label = `${where}: ${lesson} ${args.join(" ")}`.trim();
+  const dir = freshDir();
+  // Lesson 10 natively as the browser runs it: one thread, plain C blocks.
+  const as = lesson === "10_fast_raster" ? ["--threads", "1", "--simd", "none"] : [];
+  const native = spawnSync(path.join(bin, lesson), [...args, ...as], {cwd: dir, encoding: "utf8"});
+  const nativeFiles = new Map(filesUnder(dir));
+  const factory = require(path.join(wasmBin, lesson));
+  const wasm = fs.readFileSync(path.join(wasmBin, lesson + ".wasm"));
+  const r = await runLesson(factory, wasm, args, base);
+  const browserOnly = /(^|\s)--threads\s+([2-9]|\d\d)|(^|\s)--simd\s+(sse2|avx2)/.test(args.join(" "));
+  if (browserOnly) {
+    check(r.status === 2 && r.printed.split("\n").filter(Boolean).length === 1,
+          `${label}: the browser build should refuse it in one line, status 2 (got ${r.status}: ${r.printed})`);
+    console.log(`  not in the browser: ${label}: ${r.printed.trim()}`);
+    return;
+  }
+  check(r.status === native.status, `${label}: status ${r.status} in the browser, ${native.status} native`);
+  check(r.stdout === native.stdout, `${label}: prints\n${r.stdout}native:\n${native.stdout}`);
+  check(r.stderr === native.stderr, `${label}: says\n${r.stderr}native:\n${native.stderr}`);
+  // Every file after the run: what it started with, and what it wrote over it.
+  const wasmFiles = new Map(base.concat(r.written));
+  check([...wasmFiles.keys()].sort().join() === [...nativeFiles.keys()].sort().join(),
+        `${label}: after the run the browser build has ${[...wasmFiles.keys()]}, the native one ${[...nativeFiles.keys()]}`);
+  for (const [name, bytes] of nativeFiles)
+    if (wasmFiles.has(name)) check(sameFile(name, bytes, wasmFiles.get(name)), `${label}: ${name} differs`);
+}
+
+(async () => {
+  check(lessons.length === 10, `${lessons.length} lessons in ${wasmBin}, not 10`);
+  for (const l of lessons) await compare(l, [], "default run");
+  const cmds = pageCommands();
+  for (const c of cmds) await compare(c.lesson, c.args, c.where);
+  console.log(`wasm-test: ${lessons.length} default runs and ${cmds.length} page commands, native against the browser build`);
+  console.log(`wasm-test: ${passed} passed, ${failed} failed`);
+  process.exit(failed ? 1 : 0);
+})().catch((e) => { console.log("wasm-test: " + (e && e.stack || e)); process.exit(1); });
