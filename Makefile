@@ -529,11 +529,14 @@ $(WASM_BUILD)/obj/shim/%.o: tools/site/wasm/%.c tools/site/wasm/zlib.h
 # make site        every page as HTML in build/site/ (tools/site/build.sh):
 #                  a sidebar in reading order, previous and next, a table of
 #                  contents per page, a search index, two themes, code
-#                  highlighted as it is built; pandoc installed if missing
+#                  highlighted as it is built, and a Run button on each lesson
+#                  command, which runs it in the page (make wasm's build, on a
+#                  worker); pandoc installed if missing
 # make site-serve  serves it on http://127.0.0.1:8000/ (PORT=N for another)
 # make site-test   opens every page in Debian's chromium, driven by
 #                  playwright-core (tools/site/test/): no error, no broken
-#                  link or picture, the search and the theme work; then runs
+#                  link or picture, the search and the theme work, and every
+#                  Run button gives what the native lesson gives; then runs
 #                  every lesson's default run and the pages' lesson commands
 #                  in the browser build (make wasm) under node, against the
 #                  native build (tools/site/test/wasm_test.js)
@@ -542,9 +545,9 @@ $(WASM_BUILD)/obj/shim/%.o: tools/site/wasm/%.c tools/site/wasm/zlib.h
 SITE_DIR  := $(BUILD)/site
 SITE_NODE := $(BUILD)/site-node
 .PHONY: site site-serve site-test
-site:
+site: wasm
 	@sh tools/ensure-deps.sh pandoc
-	@sh tools/site/build.sh $(SITE_DIR)
+	@sh tools/site/build.sh $(SITE_DIR) $(WASM_BUILD)/bin
 
 site-serve: site
 	@sh tools/ensure-deps.sh node:nodejs
@@ -558,7 +561,8 @@ $(SITE_NODE)/node_modules/playwright-core/package.json: tools/site/test/package.
 	@cd $(SITE_NODE) && npm ci --no-audit --no-fund --loglevel=error
 	@touch $@
 
-site-test: site wasm $(BINS) $(SITE_NODE)/node_modules/playwright-core/package.json
+site-test: site $(BINS) $(SITE_NODE)/node_modules/playwright-core/package.json
 	@sh tools/ensure-deps.sh chromium
-	@node tools/site/test/site_test.js $(SITE_DIR) $(SITE_NODE)/node_modules
+	@node tools/site/test/site_test.js $(SITE_DIR) $(SITE_NODE)/node_modules $(BUILD)/bin \
+	    $(BUILD)/test-output/site
 	@node tools/site/test/wasm_test.js $(BUILD)/bin $(WASM_BUILD)/bin $(BUILD)/test-output/wasm

@@ -1,7 +1,8 @@
 #!/bin/sh
 # build.sh: the book, an HTML site of the series' pages (make site).
 #
-#   sh tools/site/build.sh [SITE_DIR]      (from the top of the tree; default build/site)
+#   sh tools/site/build.sh [SITE_DIR [WASM_BIN_DIR]]   (from the top of the tree;
+#                                        defaults build/site, build/wasm/bin)
 #
 # Every page is written once, as Markdown: README.md becomes index.html,
 # docs/X.md docs/X.html, lessons/NN/README.md lessons/NN/index.html. The site
@@ -9,11 +10,14 @@
 # diffs, examples and the lessons' files they link to are copied beside
 # them. pandoc (tools/site/links.lua) turns links to pages into links to
 # their HTML, highlights code as it builds, and writes each page's sections
-# for the search index (search-index.js). The sidebar lists the book in
+# for the search index (search-index.js), and gives each lesson command a
+# Run button that runs the lesson's browser build (make wasm) in the page
+# (site.js, worker.js, wasm/run.js). The sidebar lists the book in
 # reading order: the lessons, then the reference pages; each page links the
 # one before and after it.
 set -eu
 site=${1:-build/site}
+wasm=${2:-build/wasm/bin}
 here=tools/site
 rm -rf "$site"
 mkdir -p "$site/docs" "$site/search"
@@ -99,7 +103,25 @@ done
 for d in images diffs examples data; do
     [ -d "docs/$d" ] && cp -Rp "docs/$d" "$site/docs/"
 done
-cp -p "$here/site.css" "$here/site.js" "$site/"
+cp -p "$here/site.css" "$here/site.js" "$here/worker.js" "$site/"
+# Run it here: the lessons' browser build (make wasm), the runner the page's
+# worker shares with node, and the list of example files it loads.
+mkdir -p "$site/wasm"
+for l in lessons/[0-9][0-9]_*/main.c; do
+    l=$(basename "$(dirname "$l")")
+    cp -p "$wasm/$l" "$site/wasm/$l.js"
+    cp -p "$wasm/$l.wasm" "$site/wasm/"
+done
+cp -p "$here/wasm/run.js" "$site/wasm/"
+{
+    printf '['
+    sep=''
+    for f in $(cd docs/examples && find . -type f | sed 's#^\./##' | sort); do
+        printf '%s"%s"' "$sep" "$f"
+        sep=','
+    done
+    printf ']\n'
+} > "$site/docs/examples/index.json"
 {
     printf 'window.SEARCH_INDEX = [\n'
     cat "$site"/search/*.json | sed 's/$/,/'

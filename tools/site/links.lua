@@ -28,6 +28,62 @@ function Link(el)
   return el
 end
 
+-- Run it here: after a sh or console block, each command of it that runs a
+-- lesson (build/bin/NN_name and its arguments, no shell around it) gets a
+-- Run button and an editable command line (site.js, worker.js).
+local function escape_html(s)
+  return (s:gsub("&", "&amp;"):gsub("<", "&lt;"):gsub(">", "&gt;"):gsub('"', "&quot;"))
+end
+
+local function lesson_commands(block)
+  local console = block.classes:includes("console")
+  if not (console or block.classes:includes("sh")) then
+    return {}
+  end
+  local found = {}
+  for line in (block.text .. "\n"):gmatch("([^\n]*)\n") do
+    local cmd = line
+    if console then
+      cmd = line:match("^%$ (.*)$")
+    end
+    if cmd then
+      cmd = cmd:gsub("%s+#.*$", ""):gsub("%s+$", "")
+      local lesson = cmd:match("^build/bin/(%d%d_[%w_]+)")
+      if lesson and not cmd:find("[|&;<>()$`\\'\"*?]") then
+        table.insert(found, {lesson = lesson, cmd = cmd})
+      end
+    end
+  end
+  return found
+end
+
+local said_one_thread = false -- lesson 10's note, once a page
+
+function CodeBlock(block)
+  local cmds = lesson_commands(block)
+  if #cmds == 0 then
+    return nil
+  end
+  local html = {}
+  for _, c in ipairs(cmds) do
+    if c.lesson == "10_fast_raster" and not said_one_thread then
+      said_one_thread = true
+      table.insert(html, '<p class="run-note">In the page, lesson 10 runs on one thread ' ..
+        'with plain C blocks (no x86 SIMD) and says so; a command asking for more threads ' ..
+        'is refused here. Its speed is measured natively, by make bench (performance.md).</p>')
+    end
+    table.insert(html, string.format(
+      '<div class="run" data-lesson="%s"><div class="run-bar">' ..
+      '<button type="button" class="run-button">Run</button>' ..
+      '<input class="run-cmd" type="text" value="%s" spellcheck="false" ' ..
+      'aria-label="A command to run here, in the page"></div>' ..
+      '<div class="run-result" hidden><pre class="run-out"></pre>' ..
+      '<div class="run-pictures"></div></div></div>',
+      c.lesson, escape_html(c.cmd)))
+  end
+  return {block, pandoc.RawBlock("html", table.concat(html, "\n"))}
+end
+
 local function json_string(s)
   s = s:gsub('[%c"\\]', function(c)
     if c == '"' then return '\\"' end

@@ -1,4 +1,4 @@
-/* site.js: the book's theme switch and search (tools/site/build.sh).
+/* site.js: the book's theme switch, search and Run buttons (tools/site/build.sh).
  * The search index (search-index.js) holds every section of every page:
  * its page, title, anchor and text. A query matches a section holding
  * every one of its words; sections whose title matches come first. */
@@ -66,5 +66,63 @@
   });
   document.addEventListener("click", function (e) {
     if (!box.contains(e.target) && e.target !== input) box.hidden = true;
+  });
+
+  /* Run it here: each .run widget (links.lua) runs its command line in the
+   * lesson's browser build, on the page's worker (worker.js), and shows what
+   * it printed and the pictures it wrote. A widget keeps the last result in
+   * its .result (the site's test reads it) and says data-state="done". */
+  var worker = null, calls = 0, waiting = {};
+  function run(widget) {
+    var words = widget.querySelector(".run-cmd").value.trim().split(/\s+/);
+    var m = /^(?:\.\/)?build\/bin\/(\d\d_\w+)$/.exec(words[0] || "");
+    var out = widget.querySelector(".run-out"), pics = widget.querySelector(".run-pictures");
+    widget.querySelector(".run-result").hidden = false;
+    pics.innerHTML = "";
+    if (!m) {
+      out.textContent = "In the page, a command is build/bin/NN_name and its arguments.";
+      widget.setAttribute("data-state", "done");
+      return;
+    }
+    if (!worker) {
+      worker = new Worker(root + "worker.js");
+      worker.onmessage = function (e) {
+        var w = waiting[e.data.id];
+        delete waiting[e.data.id];
+        if (w) showResult(w, e.data);
+      };
+    }
+    widget.setAttribute("data-state", "running");
+    out.textContent = "running " + m[1] + " in the page...";
+    var id = ++calls;
+    waiting[id] = widget;
+    worker.postMessage({id: id, lesson: m[1], args: words.slice(1)});
+  }
+  function showResult(widget, r) {
+    var out = widget.querySelector(".run-out"), pics = widget.querySelector(".run-pictures");
+    widget.result = r;
+    if (r.error) {
+      out.textContent = "could not run it here: " + r.error;
+    } else {
+      out.textContent = r.printed + (r.status ? "[exit status " + r.status + "]\n" : "");
+      r.written.forEach(function (f) {
+        if (!/\.png$/.test(f[0])) return;
+        var fig = document.createElement("figure"), img = document.createElement("img");
+        var cap = document.createElement("figcaption");
+        img.src = URL.createObjectURL(new Blob([f[1]], {type: "image/png"}));
+        img.alt = "what the run wrote to " + f[0];
+        cap.textContent = f[0];
+        fig.appendChild(img);
+        fig.appendChild(cap);
+        pics.appendChild(fig);
+      });
+    }
+    widget.setAttribute("data-state", "done");
+  }
+  Array.prototype.forEach.call(document.querySelectorAll(".run"), function (widget) {
+    widget.querySelector(".run-button").addEventListener("click", function () { run(widget); });
+    widget.querySelector(".run-cmd").addEventListener("keydown", function (e) {
+      if (e.key === "Enter") run(widget);
+    });
   });
 })();

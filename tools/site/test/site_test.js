@@ -6,17 +6,28 @@
 //   - every link into the site reaches a file, and its #fragment an id there;
 //   - each page of the book in reading order links the one before and after;
 //   - the search finds each book page from words of one of its headings;
-//   - the theme button turns dark to light and back, and a reload keeps it.
+//   - the theme button turns dark to light and back, and a reload keeps it;
+//   - every Run button of a page, pressed in the page's order, runs the
+//     lesson in the page as the native one runs in a directory of its own
+//     (the pages' examples, then what the page's earlier commands wrote):
+//     the same status, stdout and stderr, and the same files (PNGs by
+//     pixels); lesson 10 natively on one thread with plain C blocks, as in
+//     the page, and refused in one line there when asked for more.
 // Prints one line per failure, then "site-test: N passed, M failed".
 //
-//   node tools/site/test/site_test.js SITE_DIR NODE_MODULES
+//   node tools/site/test/site_test.js SITE_DIR NODE_MODULES BIN_DIR WORK_DIR
 "use strict";
 const fs = require("fs");
 const path = require("path");
+const {spawnSync} = require("child_process");
 const {serve} = require("../serve.js");
+const crypto = require("crypto");
+const {unfilter, pngPixels, notInTheBrowser} = require("./png.js");
 
 const site = path.resolve(process.argv[2] || "build/site");
 const modules = path.resolve(process.argv[3] || "build/site-node/node_modules");
+const bin = path.resolve(process.argv[4] || "build/bin");
+const work = path.resolve(process.argv[5] || "build/test-output/site");
 const {chromium} = require(path.join(modules, "playwright-core"));
 
 let passed = 0, failed = 0;
@@ -50,6 +61,61 @@ function hasId(file, id) {
     idCache.set(file, ids);
   }
   return idCache.get(file).has(id);
+}
+
+// A file as the comparison sees it: a PNG's size and pixels, any other file's
+// bytes, as a SHA-256 in hex (inPageResult does the same in the page).
+function digestOf(name, bytes) {
+  const h = crypto.createHash("sha256");
+  if (name.endsWith(".png")) {
+    const p = pngPixels(bytes);
+    h.update(`${p.w}x${p.h}:`).update(p.px);
+  } else {
+    h.update(bytes);
+  }
+  return h.digest("hex");
+}
+
+// In the page: a Run widget's result, its files as digestOf gives them
+// (PNGs inflated with DecompressionStream, then png.js's unfilter, which the
+// test hands the page).
+async function inPageResult(el) {
+  const r = el.result;
+  if (!r) return null;
+  if (r.error) return {error: r.error};
+  async function pixels(buf) {
+    const view = new DataView(buf.buffer, buf.byteOffset, buf.byteLength), idat = [];
+    let i = 8, w = 0, h = 0;
+    while (i < buf.length) {
+      const n = view.getUint32(i), type = String.fromCharCode(...buf.subarray(i + 4, i + 8));
+      if (type === "IHDR") { w = view.getUint32(i + 8); h = view.getUint32(i + 12); }
+      if (type === "IDAT") idat.push(buf.subarray(i + 8, i + 8 + n));
+      i += 12 + n;
+    }
+    const stream = new Blob(idat).stream().pipeThrough(new DecompressionStream("deflate"));
+    const px = window.unfilter(new Uint8Array(await new Response(stream).arrayBuffer()), w, h);
+    const head = new TextEncoder().encode(`${w}x${h}:`), all = new Uint8Array(head.length + px.length);
+    all.set(head);
+    all.set(px, head.length);
+    return all;
+  }
+  const hex = (d) => Array.from(new Uint8Array(d), (b) => b.toString(16).padStart(2, "0")).join("");
+  const written = [];
+  for (const [name, bytes] of r.written) {
+    const data = name.endsWith(".png") ? await pixels(bytes) : bytes;
+    written.push([name, hex(await crypto.subtle.digest("SHA-256", data))]);
+  }
+  return {status: r.status, stdout: r.stdout, stderr: r.stderr, written};
+}
+
+// Every file under dir, by path relative to it.
+function snapshot(dir, rel = "", out = new Map()) {
+  for (const e of fs.readdirSync(path.join(dir, rel), {withFileTypes: true})) {
+    const r = rel ? rel + "/" + e.name : e.name;
+    if (e.isDirectory()) snapshot(dir, r, out);
+    else out.set(r, fs.readFileSync(path.join(dir, r)));
+  }
+  return out;
 }
 
 async function main() {
@@ -126,9 +192,53 @@ async function main() {
   await page.click("#theme");
   check(await page.getAttribute("html", "data-theme") === before, "a second click turns it back");
 
+  // Run it here, page by page, each command after the one before it.
+  let runs = 0;
+  for (const p of book) {
+    await page.goto(base + p);
+    await page.evaluate(`window.unfilter = ${unfilter.toString()}`);
+    const widgets = await page.$$(".run");
+    if (!widgets.length) continue;
+    const dir = path.join(work, p.replace(/[/.]/g, "_"));
+    fs.rmSync(dir, {recursive: true, force: true});
+    fs.mkdirSync(dir, {recursive: true});
+    fs.cpSync(path.resolve("docs/examples"), path.join(dir, "docs/examples"), {recursive: true});
+    for (const w of widgets) {
+      const cmd = await w.$eval(".run-cmd", (i) => i.value);
+      const [program, ...args] = cmd.split(/\s+/);
+      await w.$eval(".run-button", (b) => b.click());
+      await page.waitForFunction((el) => el.getAttribute("data-state") === "done", w, {timeout: 120000});
+      const r = await w.evaluate(inPageResult);
+      runs++;
+      const label = `${p}: Run ${cmd}`;
+      if (!r || r.error) { check(false, `${label}: ${r ? r.error : "no result"}`); continue; }
+      if (notInTheBrowser(args)) {
+        check(r.status === 2 && r.stderr.split("\n").filter(Boolean).length === 1 && !r.stdout,
+              `${label}: should be refused in the page in one line (status ${r.status})`);
+        continue;
+      }
+      const before = snapshot(dir);
+      const as = program.endsWith("10_fast_raster") ? ["--threads", "1", "--simd", "none"] : [];
+      const native = spawnSync(path.join(bin, path.basename(program)), [...args, ...as],
+                               {cwd: dir, encoding: "utf8"});
+      check(r.status === native.status, `${label}: status ${r.status} in the page, ${native.status} natively`);
+      check(r.stdout === native.stdout, `${label}: prints\n${r.stdout}natively:\n${native.stdout}`);
+      check(r.stderr === native.stderr, `${label}: says\n${r.stderr}natively:\n${native.stderr}`);
+      const after = snapshot(dir), wrote = [...after.keys()].filter((f) =>
+        !before.has(f) || Buffer.compare(before.get(f), after.get(f)) !== 0).sort();
+      const inPage = new Map(r.written);
+      check([...inPage.keys()].sort().join() === wrote.join(),
+            `${label}: writes ${[...inPage.keys()]} in the page, ${wrote} natively`);
+      for (const f of wrote)
+        if (inPage.has(f)) check(digestOf(f, after.get(f)) === inPage.get(f), `${label}: ${f} differs`);
+    }
+  }
+  check(runs >= 80, `only ${runs} Run buttons on the pages`);
+
   await browser.close();
   server.s.close();
-  console.log(`site-test: ${pages.length} pages, ${links} links into the site, ${images} pictures`);
+  console.log(`site-test: ${pages.length} pages, ${links} links into the site, ${images} pictures, ` +
+              `${runs} commands run in the page`);
   console.log(`site-test: ${passed} passed, ${failed} failed`);
   process.exit(failed ? 1 : 0);
 }

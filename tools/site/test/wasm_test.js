@@ -14,51 +14,16 @@
 "use strict";
 const fs = require("fs");
 const path = require("path");
-const zlib = require("zlib");
 const {spawnSync} = require("child_process");
 const {runLesson, filesUnder} = require("../wasm/run.js");
+const {sameFile, notInTheBrowser} = require("./png.js");
 
 const [bin, wasmBin, work] = process.argv.slice(2).map((p) => path.resolve(p));
+process.setMaxListeners(0); // each instance of a lesson under node listens to the process
 let passed = 0, failed = 0;
 function check(ok, what) {
   if (ok) passed++;
   else { failed++; console.log("FAIL: " + what); }
-}
-
-// A PNG's size and RGB pixels (8-bit RGB, no interlace: what the lessons write).
-function pngPixels(buf) {
-  let i = 8, w = 0, h = 0;
-  const idat = [];
-  while (i < buf.length) {
-    const n = buf.readUInt32BE(i), type = buf.toString("latin1", i + 4, i + 8);
-    if (type === "IHDR") { w = buf.readUInt32BE(i + 8); h = buf.readUInt32BE(i + 12); }
-    if (type === "IDAT") idat.push(buf.subarray(i + 8, i + 8 + n));
-    i += 12 + n;
-  }
-  const raw = zlib.inflateSync(Buffer.concat(idat)), stride = w * 3, px = Buffer.alloc(stride * h);
-  for (let y = 0; y < h; y++) {
-    const f = raw[y * (stride + 1)], row = raw.subarray(y * (stride + 1) + 1, (y + 1) * (stride + 1));
-    for (let x = 0; x < stride; x++) {
-      const a = x >= 3 ? px[y * stride + x - 3] : 0, b = y ? px[(y - 1) * stride + x] : 0;
-      const c = x >= 3 && y ? px[(y - 1) * stride + x - 3] : 0;
-      let p = 0;
-      if (f === 1) p = a; else if (f === 2) p = b; else if (f === 3) p = (a + b) >> 1;
-      else if (f === 4) {
-        const q = a + b - c, pa = Math.abs(q - a), pb = Math.abs(q - b), pc = Math.abs(q - c);
-        p = pa <= pb && pa <= pc ? a : pb <= pc ? b : c;
-      }
-      px[y * stride + x] = (row[x] + p) & 255;
-    }
-  }
-  return {w, h, px};
-}
-
-function sameFile(name, a, b) {
-  if (name.endsWith(".png")) {
-    const pa = pngPixels(Buffer.from(a)), pb = pngPixels(Buffer.from(b));
-    return pa.w === pb.w && pa.h === pb.h && Buffer.compare(pa.px, pb.px) === 0;
-  }
-  return Buffer.compare(Buffer.from(a), Buffer.from(b)) === 0;
 }
 
 // The pages' commands of lesson programs: [lesson, args].
@@ -109,7 +74,7 @@ async function compare(lesson, args, where) {
   const factory = require(path.join(wasmBin, lesson));
   const wasm = fs.readFileSync(path.join(wasmBin, lesson + ".wasm"));
   const r = await runLesson(factory, wasm, args, base);
-  const browserOnly = /(^|\s)--threads\s+([2-9]|\d\d)|(^|\s)--simd\s+(sse2|avx2)/.test(args.join(" "));
+  const browserOnly = notInTheBrowser(args);
   if (browserOnly) {
     check(r.status === 2 && r.printed.split("\n").filter(Boolean).length === 1,
           `${label}: the browser build should refuse it in one line, status 2 (got ${r.status}: ${r.printed})`);

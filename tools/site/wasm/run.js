@@ -1,5 +1,6 @@
 // run.js: a lesson of the browser build (make wasm) run under node, as a
-// terminal runs the native one.
+// terminal runs the native one; and runLesson, which the book's page worker
+// (tools/site/worker.js) uses too.
 //
 //   node tools/site/wasm/run.js WASM_BIN_DIR DIR LESSON [ARG ...]
 //
@@ -9,8 +10,9 @@
 // copied back into DIR; run.js exits with the lesson's status.
 // runLesson() is what the book's page worker does with the same build.
 "use strict";
-const fs = require("fs");
-const path = require("path");
+const node = typeof module !== "undefined" && typeof require === "function";
+const fs = node ? require("fs") : null;
+const path = node ? require("path") : null;
 
 // Every file under dir, as [relative path, bytes].
 function filesUnder(dir, prefix = "") {
@@ -22,6 +24,12 @@ function filesUnder(dir, prefix = "") {
     else if (e.isFile()) out.push([rel, fs.readFileSync(p)]);
   }
   return out;
+}
+
+function sameBytes(a, b) {
+  if (a.length !== b.length) return false;
+  for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) return false;
+  return true;
 }
 
 // The lesson (factory: the module of build/wasm/bin/NN, wasm: its bytes) on
@@ -43,7 +51,7 @@ async function runLesson(factory, wasm, args, inputs) {
   for (const [rel, bytes] of inputs) {
     const full = "/work/" + rel;
     let d = "";
-    for (const part of path.posix.dirname(full).split("/").filter(Boolean)) {
+    for (const part of full.split("/").slice(0, -1).filter(Boolean)) {
       d += "/" + part;
       try { mod.FS.mkdir(d); } catch (e) { /* there already */ }
     }
@@ -67,7 +75,7 @@ async function runLesson(factory, wasm, args, inputs) {
       else {
         const bytes = mod.FS.readFile(full);
         const old = before.get(r);
-        if (!old || Buffer.compare(Buffer.from(old), Buffer.from(bytes)) !== 0) written.push([r, bytes]);
+        if (!old || !sameBytes(old, bytes)) written.push([r, bytes]);
       }
     }
   })("/work", "");
@@ -76,9 +84,10 @@ async function runLesson(factory, wasm, args, inputs) {
           stderr: text(stderr), written};
 }
 
-module.exports = {runLesson, filesUnder};
+if (node) module.exports = {runLesson, filesUnder};
+else self.runLesson = runLesson;
 
-if (require.main === module) {
+if (node && require.main === module) {
   const [bin, dir, lesson, ...args] = process.argv.slice(2);
   const factory = require(path.resolve(bin, lesson));
   const wasm = fs.readFileSync(path.resolve(bin, lesson + ".wasm"));

@@ -1,0 +1,46 @@
+// worker.js: the lessons of the book's pages, run in the browser (site.js
+// starts it). A page's Run button sends {id, lesson, args}; the worker loads
+// that lesson's browser build (wasm/NN.js and NN.wasm, from make wasm) once,
+// runs it with wasm/run.js's runLesson in an in-memory file system holding
+// the pages' example files (docs/examples/) and every file the page's
+// earlier runs wrote (out/...), as a terminal in the tree would, and answers
+// {id, status, printed, stdout, stderr, written}.
+"use strict";
+self.importScripts("wasm/run.js");
+
+const lessons = new Map(); // lesson -> {factory, wasm}
+const kept = new Map();    // path -> bytes: what the page's runs wrote
+let examples = null;       // [[path, bytes]]
+
+async function bytesOf(url) {
+  const r = await fetch(url);
+  if (!r.ok) throw new Error(`cannot load ${url}: ${r.status}`);
+  return new Uint8Array(await r.arrayBuffer());
+}
+
+async function load(lesson) {
+  if (!lessons.has(lesson)) {
+    self.Lesson = undefined;
+    self.importScripts(`wasm/${lesson}.js`);
+    lessons.set(lesson, {factory: self.Lesson, wasm: await bytesOf(`wasm/${lesson}.wasm`)});
+  }
+  if (!examples) {
+    const list = await (await fetch("docs/examples/index.json")).json();
+    examples = [];
+    for (const name of list) examples.push([`docs/examples/${name}`, await bytesOf(`docs/examples/${name}`)]);
+  }
+  return lessons.get(lesson);
+}
+
+self.onmessage = async (e) => {
+  const {id, lesson, args} = e.data;
+  try {
+    const {factory, wasm} = await load(lesson);
+    const r = await self.runLesson(factory, wasm, args, examples.concat([...kept]));
+    for (const [p, b] of r.written) kept.set(p, b);
+    self.postMessage({id, status: r.status, printed: r.printed, stdout: r.stdout,
+                      stderr: r.stderr, written: r.written});
+  } catch (err) {
+    self.postMessage({id, error: String(err && err.message || err)});
+  }
+};
