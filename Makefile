@@ -531,7 +531,8 @@ $(WASM_BUILD)/obj/shim/%.o: tools/site/wasm/%.c tools/site/wasm/zlib.h
 #                  contents per page, a search index, two themes, code
 #                  highlighted as it is built, and a Run button on each lesson
 #                  command, which runs it in the page (make wasm's build, on a
-#                  worker); pandoc installed if missing
+#                  worker); and the whole book as book.epub and book.pdf (printed
+#                  by chromium); pandoc and chromium installed if missing
 # make site-serve  serves it on http://127.0.0.1:8000/ (PORT=N for another)
 # make site-test   opens every page in Debian's chromium, driven by
 #                  playwright-core (tools/site/test/): no error, no broken
@@ -546,7 +547,7 @@ SITE_DIR  := $(BUILD)/site
 SITE_NODE := $(BUILD)/site-node
 .PHONY: site site-serve site-test
 site: wasm
-	@sh tools/ensure-deps.sh pandoc
+	@sh tools/ensure-deps.sh pandoc chromium
 	@sh tools/site/build.sh $(SITE_DIR) $(WASM_BUILD)/bin
 
 site-serve: site
@@ -562,7 +563,7 @@ $(SITE_NODE)/node_modules/playwright-core/package.json: tools/site/test/package.
 	@touch $@
 
 site-test: site $(BINS) $(SITE_NODE)/node_modules/playwright-core/package.json
-	@sh tools/ensure-deps.sh chromium
+	@sh tools/ensure-deps.sh chromium pdftotext:poppler-utils
 	@node tools/site/test/site_test.js $(SITE_DIR) $(SITE_NODE)/node_modules $(BUILD)/bin \
 	    $(BUILD)/test-output/site
 	@node tools/site/test/wasm_test.js $(BUILD)/bin $(WASM_BUILD)/bin $(BUILD)/test-output/wasm

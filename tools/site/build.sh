@@ -54,6 +54,11 @@ nav=$(printf '%s\n' "$book" | awk -F'|' -v lessons=0 '
         if ($1 ~ /docs\/[0-9][0-9]_/ && !lessons) { print "<p class=\"nav-group\">Lessons</p>"; lessons = 1 }
         if ($1 ~ /docs\/conventions/) print "<p class=\"nav-group\">Reference</p>"
         printf "<a href=\"ROOT%s\" data-page=\"%s\">%s</a>\n", url, url, esc($2)
+    }
+    END {
+        print "<p class=\"nav-group\">The whole book</p>"
+        print "<a href=\"ROOTbook.pdf\">PDF</a>"
+        print "<a href=\"ROOTbook.epub\">EPUB</a>"
     }')
 
 page() { # source prev_source next_source
@@ -128,4 +133,31 @@ cp -p "$here/wasm/run.js" "$site/wasm/"
     printf '];\n'
 } > "$site/search-index.js"
 rm -rf "$site/search"
-echo "site: $(find "$site" -name '*.html' | wc -l) pages in $site"
+
+# The whole book as one document (tools/site/book.lua keeps each page's ids
+# and links apart): book.epub, and book.pdf printed by chromium from it.
+mkdir -p "$site/.book"
+n=0
+set -f
+for src in $sources; do
+    n=$((n + 1))
+    pandoc --from gfm --to json --lua-filter "$here/book.lua" --metadata "page=$src" \
+        -o "$site/.book/$(printf '%02d' $n).json" "$src"
+done
+set +f
+title="Hidden-surface removal, one lesson at a time"
+pandoc --from json --file-scope --to epub3 --toc --toc-depth 1 --resource-path=. \
+    --metadata "title=$title" --metadata lang=en -o "$site/book.epub" "$site"/.book/*.json
+cp -p "$here/print.css" "$site/"
+pandoc --from json --file-scope --to html5 --standalone --toc --toc-depth 1 \
+    --metadata "title=$title" --metadata lang=en --css print.css \
+    -o "$site/book-print.html" "$site"/.book/*.json
+rm -rf "$site/.book"
+profile=$(mktemp -d)
+chromium --headless --no-sandbox --disable-gpu --disable-quic --no-first-run \
+    --disable-background-networking --disable-component-update --disable-sync \
+    --user-data-dir="$profile" --no-pdf-header-footer --print-to-pdf="$site/book.pdf" \
+    "file://$(cd "$site" && pwd)/book-print.html" >/dev/null 2>&1
+rm -rf "$profile"
+[ -s "$site/book.pdf" ] || { echo "site: chromium printed no book.pdf" >&2; exit 1; }
+echo "site: $(find "$site" -name '*.html' | wc -l) pages in $site, and book.epub and book.pdf"

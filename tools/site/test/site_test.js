@@ -6,6 +6,7 @@
 //   - every link into the site reaches a file, and its #fragment an id there;
 //   - each page of the book in reading order links the one before and after;
 //   - the search finds each book page from words of one of its headings;
+//   - book.pdf and book.epub hold every page of the book, by its title;
 //   - the theme button turns dark to light and back, and a reload keeps it;
 //   - every Run button of a page, pressed in the page's order, runs the
 //     lesson in the page as the native one runs in a directory of its own
@@ -161,7 +162,7 @@ async function main() {
 
   // The book in reading order, from the sidebar of its first page.
   await page.goto(base + "index.html");
-  const book = await page.$$eval(".sidebar a", (list) => list.map((a) => a.getAttribute("data-page")));
+  const book = await page.$$eval(".sidebar a[data-page]", (list) => list.map((a) => a.getAttribute("data-page")));
   check(book.length >= 15, `the sidebar lists ${book.length} pages, fewer than 15`);
   for (let k = 0; k < book.length; k++) {
     await page.goto(base + book[k]);
@@ -179,6 +180,26 @@ async function main() {
     const found = await page.$$eval("#results a", (list) => list.map((a) => a.href.split("#")[0]));
     check(found.includes(base + book[k]), `search "${words}" does not find ${book[k]}`);
     await page.fill("#search", "");
+  }
+
+  // The whole book, as PDF and EPUB: every page of the book is in each, by
+  // its title (pdftotext and pandoc read them back), and the PDF has pages.
+  const titles = [];
+  for (const p of book) {
+    await page.goto(base + p);
+    titles.push(await page.$eval("article h1", (h) => h.textContent));
+  }
+  const flat = (t) => t.replace(/\s+/g, " ");
+  const pdf = spawnSync("pdftotext", [path.join(site, "book.pdf"), "-"], {encoding: "utf8"});
+  const pdfPages = Number((spawnSync("pdfinfo", [path.join(site, "book.pdf")], {encoding: "utf8"})
+                               .stdout.match(/Pages:\s+(\d+)/) || [0, 0])[1]);
+  const epub = spawnSync("pandoc", ["--from", "epub", "--to", "plain", path.join(site, "book.epub")],
+                         {encoding: "utf8"});
+  check(pdf.status === 0 && epub.status === 0, "pdftotext and pandoc read book.pdf and book.epub");
+  check(pdfPages >= book.length, `book.pdf has ${pdfPages} pages for ${book.length} pages of the book`);
+  for (const t of titles) {
+    check(flat(pdf.stdout || "").includes(flat(t)), `book.pdf lacks the page "${t}"`);
+    check(flat(epub.stdout || "").includes(flat(t)), `book.epub lacks the page "${t}"`);
   }
 
   // The theme: a click turns it, a reload keeps it, a second click turns it back.
