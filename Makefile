@@ -543,12 +543,18 @@ $(WASM_BUILD)/obj/shim/%.o: tools/site/wasm/%.c tools/site/wasm/zlib.h
 #                  native build (tools/site/test/wasm_test.js)
 # These install what they need (pandoc, emscripten, chromium, node and npm's
 # package, into build/site-node/) as they run; make run and make test never do.
-SITE_DIR  := $(BUILD)/site
+# make site EDITION=student: the student edition, in build/site-student/: the
+#                  pages and the lessons' files without their solution regions
+#                  (as make handout takes them out), the diffs between lessons
+#                  left out; make site-test checks that no solution line is in it,
+#                  and opens its pages as it opens the full edition's
+EDITION   ?= full
+SITE_DIR  := $(BUILD)/site$(if $(filter student,$(EDITION)),-student)
 SITE_NODE := $(BUILD)/site-node
 .PHONY: site site-serve site-test
 site: wasm
 	@sh tools/ensure-deps.sh pandoc chromium
-	@sh tools/site/build.sh $(SITE_DIR) $(WASM_BUILD)/bin
+	@sh tools/site/build.sh $(SITE_DIR) $(WASM_BUILD)/bin $(EDITION)
 
 site-serve: site
 	@sh tools/ensure-deps.sh node:nodejs
@@ -567,3 +573,7 @@ site-test: site $(BINS) $(SITE_NODE)/node_modules/playwright-core/package.json
 	@node tools/site/test/site_test.js $(SITE_DIR) $(SITE_NODE)/node_modules $(BUILD)/bin \
 	    $(BUILD)/test-output/site
 	@node tools/site/test/wasm_test.js $(BUILD)/bin $(WASM_BUILD)/bin $(BUILD)/test-output/wasm
+	@sh tools/site/build.sh $(BUILD)/site-student $(WASM_BUILD)/bin student
+	@sh tools/site/test/student_test.sh $(BUILD)/site-student $(BUILD)/test-output/site-student
+	@node tools/site/test/site_test.js $(BUILD)/site-student $(SITE_NODE)/node_modules $(BUILD)/bin \
+	    $(BUILD)/test-output/site-student-pages

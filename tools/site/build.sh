@@ -1,8 +1,8 @@
 #!/bin/sh
 # build.sh: the book, an HTML site of the series' pages (make site).
 #
-#   sh tools/site/build.sh [SITE_DIR [WASM_BIN_DIR]]   (from the top of the tree;
-#                                        defaults build/site, build/wasm/bin)
+#   sh tools/site/build.sh [SITE_DIR [WASM_BIN_DIR [EDITION]]]   (from the top of
+#       the tree; defaults build/site, build/wasm/bin, full; or EDITION student)
 #
 # Every page is written once, as Markdown: README.md becomes index.html,
 # docs/X.md docs/X.html, lessons/NN/README.md lessons/NN/index.html. The site
@@ -18,9 +18,31 @@
 set -eu
 site=${1:-build/site}
 wasm=${2:-build/wasm/bin}
-here=tools/site
+edition=${3:-full}
+here=$(pwd)/tools/site
+case $site in /*) ;; *) site=$(pwd)/$site ;; esac
+case $wasm in /*) ;; *) wasm=$(pwd)/$wasm ;; esac
 rm -rf "$site"
 mkdir -p "$site/docs" "$site/search"
+
+# The student edition (EDITION=student): the book of a tree in which every
+# solution region is taken out, as make handout takes it out
+# (tools/solution-regions.awk: its hint in its place), of the pages and the
+# lessons' files alike; the diffs between lessons, which show the same code,
+# are each replaced by a line that says so. It is built from that copy.
+if [ "$edition" = student ]; then
+    copy=$(mktemp -d)
+    trap 'rm -rf "$copy"' EXIT
+    cp -Rp README.md docs lessons "$copy/"
+    for f in $(cd "$copy" && grep -rlE 'SOLUTION (BEGIN|STUB|END)' README.md docs lessons); do
+        awk -v mode=strip -f tools/solution-regions.awk "$copy/$f" >"$copy/$f.student"
+        mv "$copy/$f.student" "$copy/$f"
+    done
+    for d in "$copy"/docs/diffs/*.diff; do
+        echo "This diff is not in the student edition of the book: it shows the code that the lessons' exercises ask you to write." >"$d"
+    done
+    cd "$copy"
+fi
 
 # The book in reading order: source, then its title in the sidebar.
 book="README.md|Introduction"
@@ -97,8 +119,19 @@ done
 set +f
 # The lessons' own pages (what each inherits, and from where), outside the
 # reading order, and the files they and the pages link to.
+# The student edition carries only the files the pages link to: a lesson's
+# extras may show an earlier lesson's solution (lesson 03's naive rule is
+# lesson 02's), and no page needs them.
 for readme in lessons/*/README.md; do
     page "$readme" "" ""
+    if [ "$edition" = student ]; then
+        grep -o '](\.\./[0-9][0-9]_[a-z_0-9]*/[^)]*\.[ch])' "$readme" | sed 's#^](\.\./##; s#)$##' |
+            while read -r f; do
+                mkdir -p "$site/lessons/$(dirname "$f")"
+                cp -p "lessons/$f" "$site/lessons/$f"
+            done
+        continue
+    fi
     cp -p "$(dirname "$readme")"/*.[ch] "$site/$(dirname "$readme")/" 2>/dev/null || true
     if [ -d "$(dirname "$readme")/extras" ]; then
         mkdir -p "$site/$(dirname "$readme")/extras"
