@@ -257,29 +257,12 @@ files="$tmp.files"
             *) echo "$f" ;;
         esac
     done >"$files"
-leaks=$(awk -v lines="$lines" -v files="$files" -v root="$tmp" '
-    function trim(s) { sub(/^[ \t\r]+/, "", s); sub(/[ \t\r]+$/, "", s); return s }
-    function code_of(s,    i) {
-        s = trim(s)
-        i = index(s, "/*"); if (i > 1) s = substr(s, 1, i - 1)
-        i = index(s, "//"); if (i > 1) s = substr(s, 1, i - 1)
-        s = trim(s); sub(/;$/, "", s)
-        return s
-    }
-    BEGIN {
-        while ((getline l < lines) > 0) {
-            tab = index(l, "\t")
-            where[substr(l, tab + 1)] = substr(l, 1, tab - 1)
-        }
-        while ((getline f < files) > 0) {
-            n = 0
-            while ((getline l < (root "/" f)) > 0) {
-                n++
-                c = code_of(l)
-                if (c in where) printf "  %s:%d has %s (%s)\n", f, n, where[c], c
-            }
-            close(root "/" f)
-        }
+leaks=$(sed "s|^|$tmp/|" "$files" | tr '\n' '\0' |
+    xargs -0 -r awk -v mode=find -v lines="$lines" -f "$awk_regions" |
+    awk -F '\t' -v root="$tmp/" '{
+        f = $1
+        if (index(f, root) == 1) f = substr(f, length(root) + 1)
+        printf "  %s has %s (%s)\n", f, $2, $3
     }')
 [ -z "$leaks" ] || { rm -rf "$files" "$lines" "$tmp.inherited"; die "a line of a solution region is in the handout:
 $leaks

@@ -34,6 +34,11 @@
 #            keyword, and is not in the code outside the regions (or a stub).
 #            make handout looks for these anywhere in the handout, prose and
 #            comments included, with white space taken out there too.
+#   find     with -v lines=LIST, a list that mode=lines printed: reads the
+#            files named as plain text, without regions, and prints
+#            "FILE:LINE<TAB>WHERE<TAB>code" for each line whose code is a
+#            line of the list (WHERE: where the list found it). make handout
+#            and the book's student edition look for leaks with it.
 # A malformed marker is reported as "FILE:LINE: ..." on stderr, exit status 1.
 
 function trim(s) {
@@ -114,6 +119,20 @@ function print_todo(indent, hint,    n, words, i, line, first, limit) {
 
 function first_word_on(line) {
     return line == " *" || line == ">" || line == "/* TODO(student):" || line == "> **TODO(student):**"
+}
+
+BEGIN {
+    if (mode == "find")
+        while ((getline l < lines) > 0) {
+            tab = index(l, "\t")
+            where[substr(l, tab + 1)] = substr(l, 1, tab - 1)
+        }
+}
+
+mode == "find" {
+    c = code_of($0)
+    if (c in where) printf "%s:%d\t%s\t%s\n", FILENAME, FNR, where[c], c
+    next
 }
 
 FNR == 1 {
