@@ -184,6 +184,7 @@ pandoc --from json --file-scope --to epub3 --toc --toc-depth 1 --resource-path=.
 cp -p "$here/print.css" "$site/"
 pandoc --from json --file-scope --to html5 --standalone --toc --toc-depth 1 \
     --metadata "title=$title" --metadata lang=en --css print.css \
+    --variable 'header-includes=<link rel="icon" href="data:,">' \
     -o "$site/book-print.html" "$site"/.book/*.json
 rm -rf "$site/.book"
 profile=$(mktemp -d)

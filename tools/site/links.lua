@@ -57,6 +57,31 @@ local function lesson_commands(block)
   return found
 end
 
+-- A live figure: a comment <!-- figure: steps NN_name [ARGS] --> on a page
+-- (invisible on GitHub) becomes a figure that runs the lesson in the page
+-- (site.js): its picture after each face, on a slider, and what --trace
+-- prints for any pixel clicked. It is the lesson's own output, so it cannot
+-- disagree with the C code.
+function RawBlock(el)
+  if el.format ~= "html" then
+    return nil
+  end
+  local kind, lesson, args = el.text:match("^<!%-%- figure: (%a+) (%d%d_[%w_]+)(.-)%s*%-%->%s*$")
+  if not kind then
+    return nil
+  end
+  return pandoc.RawBlock("html", string.format(
+    '<div class="figure-live" data-kind="%s" data-lesson="%s" data-args="%s">' ..
+    '<p class="figure-title">The depth test, face by face: press the button to draw the ' ..
+    'scene in the page, move the slider to see the picture after each face, and click a ' ..
+    'pixel to see every fragment that reached it, as --trace prints it.</p>' ..
+    '<button type="button" class="figure-start">Draw it face by face</button>' ..
+    '<div class="figure-body" hidden><input class="figure-slider" type="range" min="0" ' ..
+    'value="0" aria-label="After how many faces"><span class="figure-step"></span>' ..
+    '<pre class="figure-trace">Click a pixel of the picture.</pre></div></div>',
+    kind, lesson, escape_html(args:gsub("^%s+", ""))))
+end
+
 local said_one_thread = false -- lesson 10's note, once a page
 
 function CodeBlock(block)

@@ -84,19 +84,23 @@
       widget.setAttribute("data-state", "done");
       return;
     }
+    widget.setAttribute("data-state", "running");
+    out.textContent = "running " + m[1] + " in the page...";
+    ask(m[1], words.slice(1), function (r) { showResult(widget, r); });
+  }
+  /* The lesson on args, on the page's one worker; then done(result). */
+  function ask(lesson, args, done) {
     if (!worker) {
       worker = new Worker(root + "worker.js");
       worker.onmessage = function (e) {
-        var w = waiting[e.data.id];
+        var d = waiting[e.data.id];
         delete waiting[e.data.id];
-        if (w) showResult(w, e.data);
+        if (d) d(e.data);
       };
     }
-    widget.setAttribute("data-state", "running");
-    out.textContent = "running " + m[1] + " in the page...";
     var id = ++calls;
-    waiting[id] = widget;
-    worker.postMessage({id: id, lesson: m[1], args: words.slice(1)});
+    waiting[id] = done;
+    worker.postMessage({id: id, lesson: lesson, args: args});
   }
   function showResult(widget, r) {
     var out = widget.querySelector(".run-out"), pics = widget.querySelector(".run-pictures");
@@ -119,6 +123,61 @@
     }
     widget.setAttribute("data-state", "done");
   }
+  /* A live figure (links.lua): the lesson's --steps pictures on a slider, and
+   * its --trace of the pixel clicked. It says data-state="ready" once drawn
+   * and "traced" after a trace (the site's test waits for them). */
+  var FIGURE_W = 320, FIGURE_H = 240;
+  Array.prototype.forEach.call(document.querySelectorAll(".figure-live"), function (fig) {
+    var lesson = fig.getAttribute("data-lesson");
+    var extra = (fig.getAttribute("data-args") || "").split(/\s+/).filter(Boolean);
+    var size = ["--width", String(FIGURE_W), "--height", String(FIGURE_H)].concat(extra);
+    var start = fig.querySelector(".figure-start"), body = fig.querySelector(".figure-body");
+    var slider = fig.querySelector(".figure-slider"), label = fig.querySelector(".figure-step");
+    var trace = fig.querySelector(".figure-trace"), img = null; /* made once drawn */
+    var steps = [];
+    function showStep() {
+      var k = Number(slider.value);
+      img.src = steps[k];
+      label.textContent = k === 0 ? " the buffer cleared, no face drawn"
+                                  : " after " + k + " face" + (k === 1 ? "" : "s");
+    }
+    start.addEventListener("click", function () {
+      start.disabled = true;
+      start.textContent = "drawing in the page...";
+      ask(lesson, size.concat(["--steps", "out/figure-steps", "--out", "out/figure.png"]), function (r) {
+        var files = (r.written || []).filter(function (f) {
+          return /out\/figure-steps\/step_\d+\.png$/.test(f[0]);
+        }).sort(function (a, b) { return a[0] < b[0] ? -1 : 1; });
+        steps = files.map(function (f) {
+          return URL.createObjectURL(new Blob([f[1]], {type: "image/png"}));
+        });
+        if (!steps.length) { start.textContent = "could not draw it here"; return; }
+        img = document.createElement("img");
+        img.className = "figure-picture";
+        img.alt = "the picture after the faces drawn so far; click a pixel to trace it";
+        img.addEventListener("click", traceAt);
+        body.insertBefore(img, trace);
+        slider.max = String(steps.length - 1);
+        slider.value = String(steps.length - 1);
+        showStep();
+        start.hidden = true;
+        body.hidden = false;
+        fig.setAttribute("data-state", "ready");
+      });
+    });
+    slider.addEventListener("input", showStep);
+    function traceAt(e) {
+      var x = Math.floor(e.offsetX * FIGURE_W / img.clientWidth);
+      var y = Math.floor(e.offsetY * FIGURE_H / img.clientHeight);
+      trace.textContent = "tracing pixel (" + x + "," + y + ")...";
+      ask(lesson, size.concat(["--trace", x + "," + y, "--out", "out/figure-trace.png"]), function (r) {
+        var text = r.printed || r.error || "", at = text.search(/^(trace pixel|no fragment)/m);
+        trace.textContent = at >= 0 ? text.slice(at) : text;
+        fig.setAttribute("data-state", "traced");
+      });
+    }
+  });
+
   Array.prototype.forEach.call(document.querySelectorAll(".run"), function (widget) {
     widget.querySelector(".run-button").addEventListener("click", function () { run(widget); });
     widget.querySelector(".run-cmd").addEventListener("keydown", function (e) {

@@ -13,7 +13,9 @@
 //     (the pages' examples, then what the page's earlier commands wrote):
 //     the same status, stdout and stderr, and the same files (PNGs by
 //     pixels); lesson 10 natively on one thread with plain C blocks, as in
-//     the page, and refused in one line there when asked for more.
+//     the page, and refused in one line there when asked for more;
+//   - every live figure draws its steps, its slider turns the picture, and a
+//     pixel clicked shows what the native --trace prints for it.
 // Prints one line per failure, then "site-test: N passed, M failed".
 //
 //   node tools/site/test/site_test.js SITE_DIR NODE_MODULES BIN_DIR WORK_DIR
@@ -129,7 +131,9 @@ async function main() {
   });
   const page = await browser.newPage({viewport: {width: 1400, height: 1000}});
   let problems = [];
-  page.on("console", (m) => { if (m.type() === "error") problems.push("console: " + m.text()); });
+  page.on("console", (m) => {
+    if (m.type() === "error") problems.push(`console: ${m.text()} (${m.location().url})`);
+  });
   page.on("pageerror", (e) => problems.push("script error: " + e.message));
   page.on("requestfailed", (r) => problems.push("request failed: " + r.url()));
   page.on("response", (r) => { if (r.status() >= 400) problems.push(`${r.status()}: ${r.url()}`); });
@@ -255,6 +259,38 @@ async function main() {
     }
   }
   check(runs >= 80, `only ${runs} Run buttons on the pages`);
+
+  // Every live figure responds: drawn face by face, the slider turns the
+  // picture, and a pixel clicked gets what the native --trace prints for it.
+  let figures = 0;
+  for (const p of book) {
+    await page.goto(base + p);
+    for (const f of await page.$$(".figure-live")) {
+      figures++;
+      const lesson = await f.getAttribute("data-lesson");
+      const extra = (await f.getAttribute("data-args") || "").split(/\s+/).filter(Boolean);
+      await f.$eval(".figure-start", (b) => b.click());
+      await page.waitForFunction((el) => el.getAttribute("data-state") === "ready", f, {timeout: 120000});
+      const steps = Number(await f.$eval(".figure-slider", (r) => r.max));
+      check(steps >= 2, `${p}: figure of ${lesson}: ${steps + 1} pictures, not one per face and the clear`);
+      const last = await f.$eval(".figure-picture", (i) => i.src);
+      await f.$eval(".figure-slider", (r) => { r.value = "0"; r.dispatchEvent(new Event("input")); });
+      check(await f.$eval(".figure-picture", (i) => i.src) !== last, `${p}: the slider does not turn the picture`);
+      const [x, y] = [160, 150];
+      const img = await f.$(".figure-picture");
+      const box = await img.boundingBox();
+      await img.click({position: {x: (x + 0.5) * box.width / 320, y: (y + 0.5) * box.height / 240}});
+      await page.waitForFunction((el) => el.getAttribute("data-state") === "traced", f, {timeout: 120000});
+      const shown = await f.$eval(".figure-trace", (t) => t.textContent);
+      const native = spawnSync(path.join(bin, lesson), ["--width", "320", "--height", "240", ...extra,
+                                "--trace", `${x},${y}`, "--out", path.join(work, "figure.png")],
+                               {encoding: "utf8"}).stdout;
+      const at = native.search(/^(trace pixel|no fragment)/m);
+      check(at >= 0 && shown === native.slice(at),
+            `${p}: figure's trace of (${x},${y}) is\n${shown}\nnatively:\n${native.slice(at)}`);
+    }
+  }
+  check(figures >= 1, "no live figure on the pages");
 
   await browser.close();
   server.s.close();
