@@ -57,10 +57,12 @@ local function lesson_commands(block)
   return found
 end
 
--- A live figure: a comment <!-- figure: steps NN_name [ARGS] --> on a page
+-- A live figure: a comment <!-- figure: KIND NN_name [ARGS] --> on a page
 -- (invisible on GitHub) becomes a figure that runs the lesson in the page
--- (site.js): its picture after each face, on a slider, and what --trace
--- prints for any pixel clicked. It is the lesson's own output, so it cannot
+-- (site.js). steps: its picture after each face, on a slider, and what
+-- --trace prints for any pixel clicked. flags: a choice for each argument
+-- --flag=a|b|c, and the picture (or the one show=--flag writes) and summary
+-- of the lesson run with them. It is the lesson's own output, so it cannot
 -- disagree with the C code.
 function RawBlock(el)
   if el.format ~= "html" then
@@ -70,16 +72,22 @@ function RawBlock(el)
   if not kind then
     return nil
   end
+  local title = kind == "steps" and
+    'The depth test, face by face: press the button to draw the scene in the page, move ' ..
+    'the slider to see the picture after each face, and click a pixel to see every ' ..
+    'fragment that reached it, as --trace prints it.' or
+    'Try it: choose the flags, and the lesson runs in the page with them; the picture and ' ..
+    'the summary are its own.'
+  local button = kind == "steps" and "Draw it face by face" or "Draw it"
   return pandoc.RawBlock("html", string.format(
     '<div class="figure-live" data-kind="%s" data-lesson="%s" data-args="%s">' ..
-    '<p class="figure-title">The depth test, face by face: press the button to draw the ' ..
-    'scene in the page, move the slider to see the picture after each face, and click a ' ..
-    'pixel to see every fragment that reached it, as --trace prints it.</p>' ..
-    '<button type="button" class="figure-start">Draw it face by face</button>' ..
+    '<p class="figure-title">%s</p>' ..
+    '<div class="figure-choices"></div>' ..
+    '<button type="button" class="figure-start">%s</button>' ..
     '<div class="figure-body" hidden><input class="figure-slider" type="range" min="0" ' ..
     'value="0" aria-label="After how many faces"><span class="figure-step"></span>' ..
     '<pre class="figure-trace">Click a pixel of the picture.</pre></div></div>',
-    kind, lesson, escape_html(args:gsub("^%s+", ""))))
+    kind, lesson, escape_html((args:gsub("^%s+", ""))), title, button))
 end
 
 local said_one_thread = false -- lesson 10's note, once a page

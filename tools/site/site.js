@@ -127,7 +127,8 @@
    * its --trace of the pixel clicked. It says data-state="ready" once drawn
    * and "traced" after a trace (the site's test waits for them). */
   var FIGURE_W = 320, FIGURE_H = 240;
-  Array.prototype.forEach.call(document.querySelectorAll(".figure-live"), function (fig) {
+  Array.prototype.forEach.call(document.querySelectorAll('.figure-live[data-kind="flags"]'), flagsFigure);
+  Array.prototype.forEach.call(document.querySelectorAll('.figure-live[data-kind="steps"]'), function (fig) {
     var lesson = fig.getAttribute("data-lesson");
     var extra = (fig.getAttribute("data-args") || "").split(/\s+/).filter(Boolean);
     var size = ["--width", String(FIGURE_W), "--height", String(FIGURE_H)].concat(extra);
@@ -177,6 +178,65 @@
       });
     }
   });
+
+  /* A flags figure: a select per --flag=a|b|c of its arguments (the first
+   * chosen at first), the rest as they are; show=--flag names the picture to
+   * show, else --out's. Each choice runs the lesson again. It keeps the
+   * arguments of its last run in data-run and counts its runs in data-runs. */
+  function flagsFigure(fig) {
+    var lesson = fig.getAttribute("data-lesson"), fixed = [], choices = [], show = null;
+    (fig.getAttribute("data-args") || "").split(/\s+/).filter(Boolean).forEach(function (a) {
+      var m = /^(--[\w-]+)=(.+\|.+)$/.exec(a), s = /^show=(--[\w-]+)$/.exec(a);
+      if (m) choices.push({flag: m[1], values: m[2].split("|")});
+      else if (s) show = s[1];
+      else fixed.push(a);
+    });
+    var box = fig.querySelector(".figure-choices"), body = fig.querySelector(".figure-body");
+    var start = fig.querySelector(".figure-start"), pre = fig.querySelector(".figure-trace");
+    fig.querySelector(".figure-slider").remove();
+    fig.querySelector(".figure-step").remove();
+    var img = null, runs = 0;
+    choices.forEach(function (c) {
+      var label = document.createElement("label"), sel = document.createElement("select");
+      label.textContent = c.flag + " ";
+      c.values.forEach(function (v) {
+        var o = document.createElement("option");
+        o.value = o.textContent = v;
+        sel.appendChild(o);
+      });
+      sel.addEventListener("change", function () { if (img) draw(); });
+      c.select = sel;
+      label.appendChild(sel);
+      box.appendChild(label);
+    });
+    function draw() {
+      var args = fixed.slice();
+      choices.forEach(function (c) { args.push(c.flag, c.select.value); });
+      args.push("--width", "400", "--height", "300", "--out", "out/figure-flags.png");
+      if (show) args.push(show, "out/figure-flags-shown.png");
+      pre.textContent = "running " + lesson + " in the page...";
+      ask(lesson, args, function (r) {
+        var want = show ? "out/figure-flags-shown.png" : "out/figure-flags.png";
+        var f = (r.written || []).filter(function (w) { return w[0] === want; })[0];
+        if (!img) {
+          img = document.createElement("img");
+          img.className = "figure-picture";
+          body.insertBefore(img, pre);
+        }
+        img.alt = "what " + lesson + " " + args.join(" ") + " drew";
+        if (f) img.src = URL.createObjectURL(new Blob([f[1]], {type: "image/png"}));
+        pre.textContent = r.printed || r.error || "";
+        fig.setAttribute("data-run", args.join(" "));
+        fig.setAttribute("data-runs", String(++runs));
+        fig.setAttribute("data-state", "ready");
+      });
+    }
+    start.addEventListener("click", function () {
+      start.hidden = true;
+      body.hidden = false;
+      draw();
+    });
+  }
 
   Array.prototype.forEach.call(document.querySelectorAll(".run"), function (widget) {
     widget.querySelector(".run-button").addEventListener("click", function () { run(widget); });

@@ -14,8 +14,11 @@
 //     the same status, stdout and stderr, and the same files (PNGs by
 //     pixels); lesson 10 natively on one thread with plain C blocks, as in
 //     the page, and refused in one line there when asked for more;
-//   - every live figure draws its steps, its slider turns the picture, and a
-//     pixel clicked shows what the native --trace prints for it.
+//   - every live figure responds: a steps figure draws its steps, its slider
+//     turns the picture, and a pixel clicked shows what the native --trace
+//     prints for it; a flags figure, at first and after each choice turned,
+//     shows a picture and the summary the native lesson prints for the same
+//     arguments.
 // Prints one line per failure, then "site-test: N passed, M failed".
 //
 //   node tools/site/test/site_test.js SITE_DIR NODE_MODULES BIN_DIR WORK_DIR
@@ -265,7 +268,34 @@ async function main() {
   let figures = 0;
   for (const p of book) {
     await page.goto(base + p);
-    for (const f of await page.$$(".figure-live")) {
+    for (const f of await page.$$('.figure-live[data-kind="flags"]')) {
+      figures++;
+      const lesson = await f.getAttribute("data-lesson");
+      await f.$eval(".figure-start", (b) => b.click());
+      const selects = await f.$$("select");
+      check(selects.length >= 1, `${p}: figure of ${lesson} offers no choice`);
+      // Its first run, then each choice turned to its last value in turn.
+      for (let k = 0; k <= selects.length; k++) {
+        if (k > 0)
+          await selects[k - 1].evaluate((sel) => {
+            sel.value = sel.options[sel.options.length - 1].value;
+            sel.dispatchEvent(new Event("change"));
+          });
+        await page.waitForFunction(([el, n]) => el.getAttribute("data-runs") === String(n),
+                                   [f, k + 1], {timeout: 120000});
+        const args = (await f.getAttribute("data-run")).split(" ");
+        const shown = await f.$eval(".figure-trace", (t) => t.textContent);
+        const drawn = await f.$eval(".figure-picture", (i) => i.complete && i.naturalWidth > 0);
+        const dir = path.join(work, "figure-flags");
+        fs.rmSync(dir, {recursive: true, force: true});
+        fs.mkdirSync(dir, {recursive: true});
+        const native = spawnSync(path.join(bin, lesson), args, {cwd: dir, encoding: "utf8"});
+        check(drawn, `${p}: figure of ${lesson} ${args.join(" ")}: no picture`);
+        check(shown === native.stdout + native.stderr,
+              `${p}: figure of ${lesson} ${args.join(" ")} shows\n${shown}\nnatively:\n${native.stdout}${native.stderr}`);
+      }
+    }
+    for (const f of await page.$$('.figure-live[data-kind="steps"]')) {
       figures++;
       const lesson = await f.getAttribute("data-lesson");
       const extra = (await f.getAttribute("data-args") || "").split(/\s+/).filter(Boolean);
