@@ -103,7 +103,8 @@ function CodeBlock(block)
       said_one_thread = true
       table.insert(html, '<p class="run-note">In the page, lesson 10 runs on one thread ' ..
         'with plain C blocks (no x86 SIMD) and says so; a command asking for more threads ' ..
-        'is refused here. Its speed is measured natively, by make bench (performance.md).</p>')
+        'is refused here. Its speed is measured natively, by make bench ' ..
+        '(<a href="performance.html">performance</a>).</p>')
     end
     table.insert(html, string.format(
       '<div class="run" data-lesson="%s"><div class="run-bar">' ..
