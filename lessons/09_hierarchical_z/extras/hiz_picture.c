@@ -19,6 +19,27 @@ static Rgb darker(Rgb c)
     return (Rgb){(uint8_t)(c.r * 3 / 4), (uint8_t)(c.g * 3 / 4), (uint8_t)(c.b * 3 / 4)};
 }
 
+/* Pixel (x, y) is in the last column or row of its tile: drawn darker, so
+ * that the tiles show (not when they are 1 or 2 pixels). */
+static bool tile_edge(const HierarchicalZ *h, int x, int y)
+{
+    return h->tile > 2 && (x % h->tile == h->tile - 1 || y % h->tile == h->tile - 1);
+}
+
+/* picture (freed here) with its legend under it, written to path. */
+static bool write_with_legend(Image *picture, void (*draw)(LegendBand *b, const void *ctx),
+                              const void *ctx, const char *path, Error *err)
+{
+    Image im;
+    bool ok = image_with_legend(&im, picture, HIZ_LEGEND_HEIGHT, draw, ctx, err);
+    image_free(picture);
+    if (!ok)
+        return false;
+    ok = render_make_parent_dirs(path, err) && image_write_png(&im, path, err);
+    image_free(&im);
+    return ok;
+}
+
 /* The legend band: "tile's farthest d:", a ramp labelled at both ends, then
  * a swatch of the background, "far plane". ctx: the range, {dmin, dmax}. */
 static void draw_legend(LegendBand *b, const void *ctx)
@@ -57,7 +78,7 @@ bool write_hiz_picture(const Target *t, const LessonState *s, const char *path, 
     const HierarchicalZ *h = s->hiz;
     int w = t->width, hgt = t->height;
     float *d = malloc((size_t)w * (size_t)hgt * sizeof *d);
-    Image im, tiles;
+    Image tiles;
     if (!d)
         return error_set(err, "out of memory for the tile picture");
     double dmin = INFINITY, dmax = 0;
@@ -80,17 +101,11 @@ bool write_hiz_picture(const Target *t, const LessonState *s, const char *path, 
     for (int y = 0; y < hgt; y++)
         for (int x = 0; x < w; x++) {
             Rgb c = image_get(&tiles, x, y);
-            bool edge = h->tile > 2 && (x % h->tile == h->tile - 1 || y % h->tile == h->tile - 1);
+            bool edge = tile_edge(h, x, y);
             image_set(&tiles, x, y, edge ? darker(c) : c);
         }
     double range[2] = {dmin, dmax};
-    ok = image_with_legend(&im, &tiles, HIZ_LEGEND_HEIGHT, draw_legend, range, err);
-    image_free(&tiles);
-    if (!ok)
-        return false;
-    ok = render_make_parent_dirs(path, err) && image_write_png(&im, path, err);
-    image_free(&im);
-    return ok;
+    return write_with_legend(&tiles, draw_legend, range, path, err);
 }
 
 /* --skip-out: tiles by how many triangles they skipped, 1, 2+, 4+, ... 64+. */
@@ -131,7 +146,7 @@ bool write_skip_picture(const Render *r, const Target *t, const LessonState *s, 
                         Error *err)
 {
     const HierarchicalZ *h = s->hiz;
-    Image pic, im;
+    Image pic;
     if (!shade_image(&r->mesh, &r->camera, t->face, NULL, t->width, t->height, SHADE_FLAT, &pic,
                      err))
         return false;
@@ -143,14 +158,8 @@ bool write_skip_picture(const Render *r, const Target *t, const LessonState *s, 
             Rgb c = image_get(&pic, x, y), k = SKIP_COLOUR[skip_class(n)];
             Rgb mix = {(uint8_t)((c.r + 2 * k.r) / 3), (uint8_t)((c.g + 2 * k.g) / 3),
                        (uint8_t)((c.b + 2 * k.b) / 3)};
-            bool edge = h->tile > 2 && (x % h->tile == h->tile - 1 || y % h->tile == h->tile - 1);
+            bool edge = tile_edge(h, x, y);
             image_set(&pic, x, y, edge ? darker(mix) : mix);
         }
-    bool ok = image_with_legend(&im, &pic, HIZ_LEGEND_HEIGHT, draw_skip_legend, NULL, err);
-    image_free(&pic);
-    if (!ok)
-        return false;
-    ok = render_make_parent_dirs(path, err) && image_write_png(&im, path, err);
-    image_free(&im);
-    return ok;
+    return write_with_legend(&pic, draw_skip_legend, NULL, path, err);
 }
