@@ -503,19 +503,21 @@ $(BENCH_DIR)/bench_%: $(BENCH_DIR)/obj/bench_%.o $$(call bench_lesson_objs,$$*) 
 # if missing), from the same files as the native build, into build/wasm/bin/NN
 # (the JavaScript that loads it, a module factory) and NN.wasm. The build has
 # one thread (no -pthread with emcc; lesson 10 says so) and no x86 SIMD; it has
-# no zlib either, so its PNGs are written in stored deflate blocks
-# (tools/site/wasm/: zlib.h, zlib_stored.c), larger files with the same pixels,
-# and stb_image is compiled from Debian's header. tools/site/wasm/run.js runs a
-# lesson under node; make site-test compares it with the native one.
+# no zlib either, so its deflate is pako's (npm: zlib's ported to JavaScript,
+# the same bytes; tools/site/wasm/: zlib.h, zlib_pako.c, package.json), copied
+# beside the lessons, and stb_image is compiled from Debian's header.
+# tools/site/wasm/run.js runs a lesson under node; make site-test compares it
+# with the native one.
 WASM_BUILD   := build/wasm
-WASM_SHIM    := $(WASM_BUILD)/obj/shim/stb_image.o $(WASM_BUILD)/obj/shim/zlib_stored.o
+WASM_SHIM    := $(WASM_BUILD)/obj/shim/stb_image.o $(WASM_BUILD)/obj/shim/zlib_pako.o
+WASM_PAKO    := $(WASM_BUILD)/bin/pako_deflate.min.js
 WASM_LDFLAGS := -sMODULARIZE=1 -sEXPORT_NAME=Lesson -sINVOKE_RUN=0 -sALLOW_MEMORY_GROWTH=1 \
                 -sEXIT_RUNTIME=1 -sFORCE_FILESYSTEM=1 -sEXPORTED_RUNTIME_METHODS=callMain,FS \
                 -sEXPORTED_FUNCTIONS=_main,_umask -sENVIRONMENT=web,worker,node
 .PHONY: wasm
 wasm:
 	@sh tools/ensure-deps.sh emcc:emscripten node:nodejs
-	@$(MAKE) --no-print-directory $(WASM_SHIM)
+	@$(MAKE) --no-print-directory $(WASM_SHIM) $(WASM_PAKO)
 	@NODE_PATH=/usr/share/nodejs $(MAKE) --no-print-directory BUILD=$(WASM_BUILD) CC=emcc \
 	    OPT=-O2 MODE_WARN=-Wno-missing-field-initializers LDLIBS= LDFLAGS="$(WASM_LDFLAGS)" \
 	    STB_CFLAGS="-Itools/site/wasm $$(pkg-config --cflags stb)" STB_LIBS="$(WASM_SHIM)" \
@@ -524,6 +526,13 @@ wasm:
 $(WASM_BUILD)/obj/shim/%.o: tools/site/wasm/%.c tools/site/wasm/zlib.h
 	@mkdir -p $(@D)
 	emcc -O2 -Itools/site/wasm $$(pkg-config --cflags stb) -c $< -o $@
+
+$(WASM_PAKO): tools/site/wasm/package.json tools/site/wasm/package-lock.json
+	@sh tools/ensure-deps.sh node:nodejs npm:npm
+	@mkdir -p $(WASM_BUILD)/node $(@D)
+	@cp tools/site/wasm/package.json tools/site/wasm/package-lock.json $(WASM_BUILD)/node/
+	@cd $(WASM_BUILD)/node && npm ci --no-audit --no-fund --loglevel=error
+	@cp $(WASM_BUILD)/node/node_modules/pako/dist/pako_deflate.min.js $@
 
 # ---- The book ----------------------------------------------------------------
 # make site        every page as HTML in build/site/ (tools/site/build.sh):

@@ -87,19 +87,23 @@ static int filter_row(const uint8_t *row, const uint8_t *up, size_t n, uint8_t *
     return best;
 }
 
-/* Deflates what z holds (flush: Z_NO_FLUSH or, last, Z_FINISH), each full
- * output buffer one IDAT chunk. False: zlib ran out of memory. */
+/* Deflates what z holds (flush: Z_NO_FLUSH or, last, Z_FINISH) into the
+ * chunk buffer, writing it as an IDAT chunk each time it is full and, at
+ * Z_FINISH, what is left. The chunks so depend on the deflated stream alone,
+ * not on when zlib hands its bytes out. False: zlib ran out of memory. */
 static bool deflate_into(AtomicFile *f, z_stream *z, unsigned char *chunk, int flush)
 {
     int status;
     do {
-        z->next_out = chunk, z->avail_out = PNG_CHUNK;
         status = deflate(z, flush);
         if (status == Z_STREAM_ERROR || status == Z_MEM_ERROR)
             return false;
-        if (z->avail_out < PNG_CHUNK)
-            write_chunk(f, "IDAT", chunk, PNG_CHUNK - z->avail_out);
-    } while (z->avail_out == 0 || (flush == Z_FINISH && status != Z_STREAM_END));
+        if (z->avail_out == 0 || (flush == Z_FINISH && status == Z_STREAM_END)) {
+            if (z->avail_out < PNG_CHUNK)
+                write_chunk(f, "IDAT", chunk, PNG_CHUNK - z->avail_out);
+            z->next_out = chunk, z->avail_out = PNG_CHUNK;
+        }
+    } while (z->avail_in > 0 || (flush == Z_FINISH && status != Z_STREAM_END));
     return true;
 }
 
@@ -125,6 +129,7 @@ static bool encode_png(AtomicFile *f, const Image *im)
     for (int k = 0; k < 5; k++)
         out[k] = work + (size_t)k * (n + 1);
     memset(zeros, 0, n + 1);
+    z.next_out = chunk, z.avail_out = PNG_CHUNK;
     for (int y = 0; ok && y < im->height; y++) {
         const uint8_t *row = im->rgb + (size_t)y * n;
         int k = filter_row(row, y > 0 ? row - n : zeros, n, out);

@@ -150,7 +150,7 @@ for l in lessons/[0-9][0-9]_*/main.c; do
     cp -p "$wasm/$l" "$site/wasm/$l.js"
     cp -p "$wasm/$l.wasm" "$site/wasm/"
 done
-cp -p "$here/wasm/run.js" "$site/wasm/"
+cp -p "$here/wasm/run.js" "$wasm/pako_deflate.min.js" "$site/wasm/"
 {
     printf '['
     sep=''

@@ -6,7 +6,7 @@
 // earlier runs wrote (out/...), as a terminal in the tree would, and answers
 // {id, status, printed, stdout, stderr, written}.
 "use strict";
-self.importScripts("wasm/run.js");
+self.importScripts("wasm/run.js", "wasm/pako_deflate.min.js");
 
 const lessons = new Map(); // lesson -> {factory, wasm}
 const kept = new Map();    // path -> bytes: what the page's runs wrote

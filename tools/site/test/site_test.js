@@ -11,8 +11,8 @@
 //   - every Run button of a page, pressed in the page's order, runs the
 //     lesson in the page as the native one runs in a directory of its own
 //     (the pages' examples, then what the page's earlier commands wrote):
-//     the same status, stdout and stderr, and the same files (PNGs by
-//     pixels); lesson 10 natively on one thread with plain C blocks, as in
+//     the same status, stdout and stderr, and the same files, byte for
+//     byte; lesson 10 natively on one thread with plain C blocks, as in
 //     the page, and refused in one line there when asked for more;
 //   - every live figure responds: a steps figure draws its steps, its slider
 //     turns the picture, and a pixel clicked shows what the native --trace
@@ -28,7 +28,7 @@ const path = require("path");
 const {spawnSync} = require("child_process");
 const {serve} = require("../serve.js");
 const crypto = require("crypto");
-const {unfilter, pngPixels, notInTheBrowser} = require("./png.js");
+const {notInTheBrowser} = require("./not_in_the_browser.js");
 
 const site = path.resolve(process.argv[2] || "build/site");
 const modules = path.resolve(process.argv[3] || "build/site-node/node_modules");
@@ -69,48 +69,22 @@ function hasId(file, id) {
   return idCache.get(file).has(id);
 }
 
-// A file as the comparison sees it: a PNG's size and pixels, any other file's
-// bytes, as a SHA-256 in hex (inPageResult does the same in the page).
+// A file as the comparison sees it: its bytes, as a SHA-256 in hex
+// (inPageResult does the same in the page). The browser build's PNGs are
+// the native ones byte for byte: its deflate is pako's, zlib's bytes.
 function digestOf(name, bytes) {
-  const h = crypto.createHash("sha256");
-  if (name.endsWith(".png")) {
-    const p = pngPixels(bytes);
-    h.update(`${p.w}x${p.h}:`).update(p.px);
-  } else {
-    h.update(bytes);
-  }
-  return h.digest("hex");
+  return crypto.createHash("sha256").update(bytes).digest("hex");
 }
 
-// In the page: a Run widget's result, its files as digestOf gives them
-// (PNGs inflated with DecompressionStream, then png.js's unfilter, which the
-// test hands the page).
+// In the page: a Run widget's result, its files as digestOf gives them.
 async function inPageResult(el) {
   const r = el.result;
   if (!r) return null;
   if (r.error) return {error: r.error};
-  async function pixels(buf) {
-    const view = new DataView(buf.buffer, buf.byteOffset, buf.byteLength), idat = [];
-    let i = 8, w = 0, h = 0;
-    while (i < buf.length) {
-      const n = view.getUint32(i), type = String.fromCharCode(...buf.subarray(i + 4, i + 8));
-      if (type === "IHDR") { w = view.getUint32(i + 8); h = view.getUint32(i + 12); }
-      if (type === "IDAT") idat.push(buf.subarray(i + 8, i + 8 + n));
-      i += 12 + n;
-    }
-    const stream = new Blob(idat).stream().pipeThrough(new DecompressionStream("deflate"));
-    const px = window.unfilter(new Uint8Array(await new Response(stream).arrayBuffer()), w, h);
-    const head = new TextEncoder().encode(`${w}x${h}:`), all = new Uint8Array(head.length + px.length);
-    all.set(head);
-    all.set(px, head.length);
-    return all;
-  }
   const hex = (d) => Array.from(new Uint8Array(d), (b) => b.toString(16).padStart(2, "0")).join("");
   const written = [];
-  for (const [name, bytes] of r.written) {
-    const data = name.endsWith(".png") ? await pixels(bytes) : bytes;
-    written.push([name, hex(await crypto.subtle.digest("SHA-256", data))]);
-  }
+  for (const [name, bytes] of r.written)
+    written.push([name, hex(await crypto.subtle.digest("SHA-256", bytes))]);
   return {status: r.status, stdout: r.stdout, stderr: r.stderr, written};
 }
 
@@ -224,7 +198,6 @@ async function main() {
   let runs = 0;
   for (const p of book) {
     await page.goto(base + p);
-    await page.evaluate(`window.unfilter = ${unfilter.toString()}`);
     const widgets = await page.$$(".run");
     if (!widgets.length) continue;
     const dir = path.join(work, p.replace(/[/.]/g, "_"));

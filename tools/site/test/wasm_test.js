@@ -4,9 +4,9 @@
 // console block that runs build/bin/NN with no shell around it), both
 // builds run in a directory of their own that holds the same files (the
 // pages' examples, and out/ as make run leaves it, made here), and must agree: the same
-// status, the same text printed, the same files written; pictures with the
-// same size and pixels (the browser build writes its PNGs uncompressed),
-// every other file byte for byte. A command the browser build cannot run as
+// status, the same text printed, the same files written, byte for byte
+// (pictures too: the browser build deflates with pako, which gives zlib's
+// bytes). A command the browser build cannot run as
 // the native one does (lesson 10 on more than one thread, or with x86 SIMD)
 // must be refused there in one line with status 2, and is listed.
 //
@@ -15,8 +15,8 @@
 const fs = require("fs");
 const path = require("path");
 const {spawnSync} = require("child_process");
-const {runLesson, filesUnder} = require("../wasm/run.js");
-const {sameFile, notInTheBrowser} = require("./png.js");
+const {runLesson, filesUnder, loadLesson} = require("../wasm/run.js");
+const {notInTheBrowser} = require("./not_in_the_browser.js");
 
 const [bin, wasmBin, work] = process.argv.slice(2).map((p) => path.resolve(p));
 process.setMaxListeners(0); // each instance of a lesson under node listens to the process
@@ -71,8 +71,7 @@ async function compare(lesson, args, where) {
   const as = lesson === "10_fast_raster" ? ["--threads", "1", "--simd", "none"] : [];
   const native = spawnSync(path.join(bin, lesson), [...args, ...as], {cwd: dir, encoding: "utf8"});
   const nativeFiles = new Map(filesUnder(dir));
-  const factory = require(path.join(wasmBin, lesson));
-  const wasm = fs.readFileSync(path.join(wasmBin, lesson + ".wasm"));
+  const {factory, wasm} = loadLesson(wasmBin, lesson);
   const r = await runLesson(factory, wasm, args, base);
   const browserOnly = notInTheBrowser(args);
   if (browserOnly) {
@@ -89,7 +88,7 @@ async function compare(lesson, args, where) {
   check([...wasmFiles.keys()].sort().join() === [...nativeFiles.keys()].sort().join(),
         `${label}: after the run the browser build has ${[...wasmFiles.keys()]}, the native one ${[...nativeFiles.keys()]}`);
   for (const [name, bytes] of nativeFiles)
-    if (wasmFiles.has(name)) check(sameFile(name, bytes, wasmFiles.get(name)), `${label}: ${name} differs`);
+    if (wasmFiles.has(name)) check(Buffer.compare(Buffer.from(bytes), Buffer.from(wasmFiles.get(name))) === 0, `${label}: ${name} differs`);
 }
 
 (async () => {

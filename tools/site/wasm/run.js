@@ -84,13 +84,21 @@ async function runLesson(factory, wasm, args, inputs) {
           stderr: text(stderr), written};
 }
 
-if (node) module.exports = {runLesson, filesUnder};
+// Under node: the lesson of the browser build in bin (its module factory
+// and its wasm bytes), with the deflate its PNGs need (pako, which make wasm
+// puts beside the lessons, and the page's worker loads as a script).
+function loadLesson(bin, lesson) {
+  globalThis.pako = require(path.resolve(bin, "pako_deflate.min.js"));
+  return {factory: require(path.resolve(bin, lesson)),
+          wasm: fs.readFileSync(path.resolve(bin, lesson + ".wasm"))};
+}
+
+if (node) module.exports = {runLesson, filesUnder, loadLesson};
 else self.runLesson = runLesson;
 
 if (node && require.main === module) {
   const [bin, dir, lesson, ...args] = process.argv.slice(2);
-  const factory = require(path.resolve(bin, lesson));
-  const wasm = fs.readFileSync(path.resolve(bin, lesson + ".wasm"));
+  const {factory, wasm} = loadLesson(bin, lesson);
   const inputs = filesUnder("docs/examples", "docs/examples/").concat(filesUnder(dir));
   runLesson(factory, wasm, args, inputs).then((r) => {
     process.stdout.write(r.printed);

@@ -1,10 +1,11 @@
 /* zlib.h for the browser build of the lessons (make wasm): the part of
- * zlib that common/harness/image_io.c uses, with deflate writing "stored"
- * blocks, which need no compression. The browser build has no zlib (Debian's
- * emscripten ships none); its PNGs are larger than the native ones, and their
- * pixels the same. zlib_stored.c has the functions. */
-#ifndef ZLIB_STORED_H
-#define ZLIB_STORED_H
+ * zlib that common/harness/image_io.c uses. Debian's emscripten ships no
+ * zlib, so deflate is pako's (npm), zlib's deflate ported to JavaScript,
+ * which gives the bytes zlib gives: the browser build's PNGs are the native
+ * ones, byte for byte (make site-test compares them). zlib_pako.c has the
+ * functions. */
+#ifndef ZLIB_PAKO_H
+#define ZLIB_PAKO_H
 
 typedef unsigned char Bytef;
 typedef unsigned int uInt;

@@ -1,8 +1,9 @@
-/* zlib_stored.c: see zlib.h beside it. deflate keeps what it is given;
- * at Z_FINISH it makes the zlib stream (RFC 1950: a header, the data in
- * stored deflate blocks of at most 65535 bytes (RFC 1951), the Adler-32 of
- * the data) and hands it out as room allows. */
+/* zlib_pako.c: see zlib.h beside it. deflate keeps what it is given; at
+ * Z_FINISH pako deflates it all at once, and deflate hands the zlib stream
+ * out as room allows. */
 #include "zlib.h"
+
+#include <emscripten.h>
 
 #include <stdlib.h>
 #include <string.h>
@@ -37,29 +38,32 @@ static int keep(Held *h, const unsigned char *p, size_t n)
     return 1;
 }
 
+/* The held input deflated by pako (zlib's deflate ported to JavaScript,
+ * which the page or run.js loads as globalThis.pako) at zlib's defaults,
+ * as common/harness/image_io.c asks: the bytes native zlib gives. Its
+ * length, or -1 if pako could not. pako_take copies it into dst. */
+EM_JS(int, pako_deflate, (const unsigned char *data, int size), {
+    try {
+        Module.deflated = globalThis.pako.deflate(HEAPU8.subarray(data, data + size));
+        return Module.deflated.length;
+    } catch (e) {
+        return -1;
+    }
+});
+EM_JS(void, pako_take, (unsigned char *dst), {
+    HEAPU8.set(Module.deflated, dst);
+    Module.deflated = null;
+});
+
 static int finish(Held *h)
 {
-    size_t n = h->size, blocks = n / 65535 + 1;
-    unsigned char *s = malloc(2 + n + 5 * blocks + 4);
+    int n = h->size <= 0x7fffffff ? pako_deflate(h->data, (int)h->size) : -1;
+    unsigned char *s = n >= 0 ? malloc((size_t)n + 1) : NULL;
     if (!s)
         return 0;
-    unsigned long a = 1, b = 0;
-    for (size_t i = 0; i < n; i++)
-        a = (a + h->data[i]) % 65521, b = (b + a) % 65521;
-    size_t o = 0, i = 0;
-    s[o++] = 0x78, s[o++] = 0x01; /* deflate, 32K window, check bits: 0x7801 % 31 == 0 */
-    do {
-        size_t len = n - i < 65535 ? n - i : 65535;
-        s[o++] = i + len == n; /* BFINAL on the last block, BTYPE 00: stored */
-        s[o++] = (unsigned char)len, s[o++] = (unsigned char)(len >> 8);
-        s[o++] = (unsigned char)~len, s[o++] = (unsigned char)(~len >> 8);
-        memcpy(s + o, h->data + i, len);
-        o += len, i += len;
-    } while (i < n);
-    s[o++] = (unsigned char)(b >> 8), s[o++] = (unsigned char)b;
-    s[o++] = (unsigned char)(a >> 8), s[o++] = (unsigned char)a;
+    pako_take(s);
     free(h->data);
-    h->data = s, h->size = o, h->capacity = o, h->sent = 0, h->finished = 1;
+    h->data = s, h->size = (size_t)n, h->capacity = (size_t)n, h->sent = 0, h->finished = 1;
     return 1;
 }
 
