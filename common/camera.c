@@ -116,13 +116,17 @@ Vec4 camera_to_clip(const Camera *c, Vec3 world)
 
 ScreenVertex camera_project(const Camera *c, Vec3 world)
 {
-    Vec4 clip = camera_to_clip(c, world);
+    return camera_divide(camera_to_clip(c, world), c->width, c->height);
+}
+
+ScreenVertex camera_divide(Vec4 clip, int width, int height)
+{
     ScreenVertex sv = {0.0, 0.0, clip.w};                 /* w_clip = d = -z_view */
     if (sv.d > 0) {                                       /* d <= 0: behind the eye, x, y stay 0 */
         double x_ndc = clip.x / clip.w;                   /* x_ndc = x_clip / w_clip */
         double y_ndc = clip.y / clip.w;                   /* y_ndc = y_clip / w_clip */
-        sv.x = (x_ndc + 1) * c->width / 2;                /* x_s = (x_ndc + 1) * W / 2 */
-        sv.y = (1 - y_ndc) * c->height / 2;               /* y_s = (1 - y_ndc) * H / 2 */
+        sv.x = (x_ndc + 1) * width / 2;                   /* x_s = (x_ndc + 1) * W / 2 */
+        sv.y = (1 - y_ndc) * height / 2;                  /* y_s = (1 - y_ndc) * H / 2 */
     }
     return sv;
 }

@@ -37,5 +37,8 @@ void camera_init(Camera *c, Vec3 eye, Vec3 target, Vec3 up, double fovy_degrees,
 Vec3 camera_to_view(const Camera *c, Vec3 world);
 Vec4 camera_to_clip(const Camera *c, Vec3 world); /* P V (x, y, z, 1): w = d */
 ScreenVertex camera_project(const Camera *c, Vec3 world);
+/* clip divided by w_c and put on a width x height screen, as camera_project
+ * puts it (w_c <= 0: behind the eye, x and y stay 0). */
+ScreenVertex camera_divide(Vec4 clip, int width, int height);
 
 #endif

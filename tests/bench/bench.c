@@ -4,10 +4,13 @@
  *
  * Built once per lesson (make bench): the lessons define the same function
  * names, so each binary links one lesson, and BENCH_RASTERIZER names its
- * Rasterizer (rasterizer.h), e.g. -DBENCH_RASTERIZER=ZBUFFER. It draws each
- * workload (all of them when none is named) straight through draw_face, with
- * no camera and no file I/O in the timed part, and prints one CSV line per
- * workload (measure.h); tests/bench/run-bench.sh makes the table. Lessons 06
+ * Rasterizer (rasterizer.h), e.g. -DBENCH_RASTERIZER=ZBUFFER. It times
+ * frames of each workload (all of them when none is named) as a GPU's frame
+ * is timed, glClear, the draw and glFinish: the lesson's clear, then
+ * workload_draw (every corner from clip space to the screen, every face into
+ * draw_face), then whatever the lesson still holds back drawn; no file I/O.
+ * It prints one CSV line per workload (measure.h); tests/bench/run-bench.sh
+ * makes the table. Lessons 06
  * on draw into a unorm24 buffer, standard mapping, with the workload's near
  * and far, as GL's default framebuffer has it. */
 #include <stdio.h>
@@ -48,7 +51,7 @@ extern const Rasterizer BENCH_RASTERIZER;
  * The warm-up counts (Target.counting): the fragments tested come from it.
  * The timed repetitions count nothing, as a renderer that is asked for no
  * counts would draw (docs/performance.md, "What counting costs"). */
-static bool measure_workload(const Rasterizer *lesson_rz, const Workload *w, int reps,
+static bool measure_workload(const Rasterizer *lesson_rz, Workload *w, int reps,
                              int config, Measurement *m, Error *err)
 {
     Target t;
@@ -89,6 +92,7 @@ static bool measure_workload(const Rasterizer *lesson_rz, const Workload *w, int
         target_reset(&t, rz);
         t.counting = k < 0;
         double start = wall_clock ? now_wall_seconds() : now_seconds();
+        rz->clear(&t, rz->state); /* timed, as glClear is */
         workload_draw(w, &t, rz);
 #ifdef BENCH_FINISH
         BENCH_FINISH(&t, rz->state, NULL); /* a rasterizer that holds faces back draws them now */

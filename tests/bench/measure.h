@@ -1,9 +1,10 @@
 /* measure.h: timing a piece of drawing several times, and one line of results.
  *
  * A run is BENCH_WARMUP untimed repetitions (caches, page faults, CPU clock
- * settling), then BENCH_REPS timed ones. Before each repetition the target
- * is cleared, untimed: only drawing is measured. The result is the median
- * time and the spread (fastest and slowest repetition).
+ * settling), then BENCH_REPS timed ones. Before each repetition the counts
+ * are reset, untimed; a repetition is a frame, clear included (bench.c).
+ * The result is the median time and the spread (fastest and slowest
+ * repetition).
  *
  * The warm-up draws with counting on (Target.counting, target.h): the
  * fragments tested come from it. The timed repetitions draw with counting
@@ -45,7 +46,8 @@ double now_seconds(void);
  * rows with more than one), whose CPU times add up. */
 double now_wall_seconds(void);
 
-/* Back to the state target_init leaves: depth = clear, no face, no counts. */
+/* Back to the state target_init leaves: depth = clear, no face, no counts
+ * (a frame clears again, timed: this one makes the counts start at zero). */
 void target_reset(Target *t, const Rasterizer *rz);
 
 /* Median, minimum and maximum of times[0 .. n-1] (n >= 1; sorts times). */

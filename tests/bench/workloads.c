@@ -50,16 +50,35 @@ static double random_uniform(Random *r, double lo, double hi)
 static bool alloc_triangles(Workload *w, int ntris, Error *err)
 {
     w->verts = malloc((size_t)ntris * 3 * sizeof *w->verts);
+    w->verts_clip = malloc((size_t)ntris * 3 * sizeof *w->verts_clip);
     w->faces = malloc((size_t)ntris * sizeof *w->faces);
-    if (!w->verts || !w->faces) {
+    if (!w->verts || !w->verts_clip || !w->faces) {
         workload_free(w);
         return error_set(err, "out of memory for %d triangles", ntris);
     }
     w->nfaces = ntris;
     w->ntris = ntris;
-    for (int i = 0; i < ntris; i++)
+    for (int i = 0; i < ntris; i++) {
         w->faces[i] = screen_triangle(&w->verts[3 * i], i);
+        w->faces[i].clip = &w->verts_clip[3 * i];
+    }
+    w->clip = w->verts_clip, w->corners = w->verts, w->ncorners = 3 * (long)ntris;
     return true;
+}
+
+/* The screen corners laid out: each made the clip-space corner that a camera
+ * with the workload's near and far puts there (x_c and y_c from the viewport
+ * backwards, z_c as perspective's matrix makes it, w_c = d), and put back on
+ * the screen as each frame will (the layout's x and y, to a rounding). */
+static void screen_to_clip(Workload *w)
+{
+    double n = w->ctx.near, f = w->ctx.far;
+    for (long k = 0; k < w->ncorners; k++) {
+        ScreenVertex s = w->verts[k];
+        w->verts_clip[k] = vec4((2 * s.x / w->width - 1) * s.d, (1 - 2 * s.y / w->height) * s.d,
+                                ((f + n) * s.d - 2 * f * n) / (f - n), s.d);
+        w->verts[k] = camera_divide(w->verts_clip[k], w->width, w->height);
+    }
 }
 
 /* Right triangles with both legs `leg` pixels long, along the axes: the
@@ -81,6 +100,7 @@ static bool build_right_triangles(Workload *w, int count, double leg, uint64_t s
             w->verts[3 * i + k] = v;
         }
     }
+    screen_to_clip(w);
     return true;
 }
 
@@ -102,6 +122,7 @@ static bool build_fill(Workload *w, bool back_to_front, Error *err)
                                    {0, 0, d}, {W, H, d}, {0, H, d}};
         memcpy(v, corners, sizeof corners);
     }
+    screen_to_clip(w);
     return true;
 }
 
@@ -126,6 +147,8 @@ static bool build_projected(Workload *w, const char *scene, Mesh *m, Error *err)
     w->has_render = true;
     w->ctx.near = cam.near;
     w->ctx.far = cam.far;
+    w->clip = w->render.clip, w->corners = w->render.corners;
+    w->ncorners = w->render.mesh.ncorners;
 
     /* The faces render_faces would draw, in mesh order (none is dropped
      * with this camera, but the rule is the pipeline's, not ours). */
@@ -204,6 +227,7 @@ bool workload_build(Workload *w, WorkloadKind kind, Error *err)
 void workload_free(Workload *w)
 {
     free(w->verts);
+    free(w->verts_clip);
     free(w->faces);
     if (w->has_render)
         render_free(&w->render);
@@ -211,12 +235,18 @@ void workload_free(Workload *w)
     *w = empty;
 }
 
-void workload_draw(const Workload *w, Target *t, const Rasterizer *rz)
+void workload_draw(Workload *w, Target *t, const Rasterizer *rz)
 {
     DrawContext ctx = w->ctx;
     ctx.width = t->width, ctx.height = t->height;
-    for (int i = 0; i < w->nfaces; i++)
-        rz->draw_face(t, rz->state, &w->faces[i], &ctx);
+    for (long k = 0; k < w->ncorners; k++)
+        w->corners[k] = camera_divide(w->clip[k], t->width, t->height);
+    for (int i = 0; i < w->nfaces; i++) {
+        ScreenFace f = w->faces[i];
+        if (!rz->clips)
+            f.clip = NULL;
+        rz->draw_face(t, rz->state, &f, &ctx);
+    }
 }
 
 uint64_t depth_checksum(const Target *t)

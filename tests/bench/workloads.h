@@ -1,10 +1,13 @@
 /* workloads.h: what the benchmark draws, built the same way every time.
  *
- * Each workload is a list of faces already on the screen (ScreenFace, render.h)
- * and the buffer size to draw them into. The benchmark hands them to a
- * lesson's draw_face one by one; the tests (test_bench_workloads.c) draw the
- * same faces through render_faces, the lesson program's own path, and check
- * that both leave the same depth buffer. Random numbers come from a fixed
+ * Each workload is a list of faces, every corner given in clip space (what
+ * Mesa's llvmpipe receives, tests/gpu/bench_llvmpipe.c), and the buffer size
+ * to draw them into. A frame (workload_draw) is the work a GPU does from
+ * there: every corner divided by w_c and put on the screen, then each face
+ * handed to the lesson's draw_face, with its clip-space corners to a lesson
+ * that clips, as render_faces hands them. The tests (test_bench_workloads.c)
+ * draw the same faces through render_faces, the lesson program's own path,
+ * and check that both leave the same depth buffer. Random numbers come from a fixed
  * seed and our own generator, so every machine draws the same triangles.
  *
  *   small               100,000 right triangles, legs 10 px, 1024x1024
@@ -14,15 +17,16 @@
  *   fill_front_to_back  the same layers, nearest first: after the first
  *                       layer every fragment fails
  *   mesh                a torus knot of 200,000 triangles seen by the knot
- *                       scene's camera at 1920x1080 (projected when built,
- *                       so drawing it is screen-space work like the others)
+ *                       scene's camera at 1920x1080
  *   city                the built-in scene city (a wall drawn first, 510
  *                       small buildings behind it) by its camera, 1024x768:
  *                       most fragments are hidden (lesson 09)
  *
- * In the screen-space workloads every corner's view depth d is uniform in
- * [WORKLOAD_D_MIN, WORKLOAD_D_MAX] (the fill layers space their depths evenly
- * over that range). */
+ * The first four are laid out on the screen: each corner (x, y, d) is made a
+ * clip-space corner as a camera with WORKLOAD_NEAR and WORKLOAD_FAR would
+ * put it there, and the frame's divide brings it back. Every corner's view
+ * depth d is uniform in [WORKLOAD_D_MIN, WORKLOAD_D_MAX] (the fill layers
+ * space their depths evenly over that range). */
 #ifndef WORKLOADS_H
 #define WORKLOADS_H
 
@@ -75,8 +79,14 @@ typedef struct {
     ScreenFace *faces;    /* in drawing order; they point into verts or render */
     long ntris;           /* triangles in all faces: n - 2 per face */
     ScreenVertex *verts;  /* the screen-space workloads: 3 corners per triangle */
+    Vec4 *verts_clip;     /* ... and the same in clip space */
     Render render;        /* the mesh workload: mesh, camera, projected corners */
     bool has_render;
+    /* Every corner of every face: clip[k] in clip space, divided by each
+     * frame into corners[k], where the faces' v point (verts, or render's). */
+    const Vec4 *clip;
+    ScreenVertex *corners;
+    long ncorners;
 } Workload;
 
 const char *workload_name(WorkloadKind kind);
@@ -86,9 +96,11 @@ const char *workload_name(WorkloadKind kind);
 bool workload_build(Workload *w, WorkloadKind kind, Error *err);
 void workload_free(Workload *w);
 
-/* Draws every face of w, in order, straight into the lesson's draw_face: no
- * camera, no drop test, nothing but the rasterizer. t must be w's size. */
-void workload_draw(const Workload *w, Target *t, const Rasterizer *rz);
+/* One frame of w: every corner divided (camera_divide) and put on t, then
+ * every face, in order, straight into the lesson's draw_face, with its
+ * clip-space corners if the lesson clips: no drop test, nothing but the
+ * pipeline from clip space on. t must be w's size. */
+void workload_draw(Workload *w, Target *t, const Rasterizer *rz);
 
 /* A 64-bit FNV-1a hash of the depth buffer's bytes: two buffers with the same
  * checksum hold the same values (barring a 1 in 2^64 accident). */

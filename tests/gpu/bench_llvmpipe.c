@@ -1,21 +1,25 @@
 /* bench_llvmpipe: Mesa's llvmpipe on the benchmark's workloads
- * (tests/bench/workloads.h), for make bench's rows "llvmpipe_1t" (one
- * rasterizer thread, LP_NUM_THREADS=1) and "llvmpipe_Nt" (all N cores).
+ * (tests/bench/workloads.h), for make bench's rows "llvmpipe_0t" (no
+ * rasterizer thread: llvmpipe rasterizes in the calling thread,
+ * LP_NUM_THREADS=0), "llvmpipe_1t" (one rasterizer thread of its own,
+ * LP_NUM_THREADS=1) and "llvmpipe_Nt" (all N cores). On one core the peer is
+ * the faster of the first two on each workload (run-bench.sh).
  *
  *     bench_llvmpipe [--reps N] [WORKLOAD ...]
  *
- * Without LP_NUM_THREADS in the environment it runs itself twice, with
- * LP_NUM_THREADS=1 and then with the number of cores, since llvmpipe reads
- * it once, when its screen is made. Each workload's triangles go to the GPU
- * as the lessons have them on the screen (x, y in pixels, d): w_c = d, x_c
- * and y_c from the viewport backwards, z_c as gluPerspective's P puts it; the
- * depth buffer is unorm24 with the standard mapping, as a GL default
- * framebuffer; the shader writes the face index, as --id-out. Timed: the
- * clear, the draw and glFinish; not timed: the context, the shaders, the
- * upload. With one thread the time is the CPU time of the whole process
- * (llvmpipe rasterizes in a thread of its own): the lessons' measure, which
- * other programs on the machine do not inflate; with all cores it is the
- * wall clock, the only one that shows threads working together. The CSV
+ * Without LP_NUM_THREADS in the environment it runs itself three times,
+ * with LP_NUM_THREADS=0, 1 and the number of cores, since llvmpipe reads it
+ * once, when its screen is made. Each workload's corners go to the GPU in
+ * clip space, as the lessons' frames take them (workload_draw), y_c negated
+ * (gl.h, flip-y), through a vertex shader that passes them on; the depth
+ * buffer is unorm24 with the standard mapping, as a GL default framebuffer;
+ * the shader writes the face index, as --id-out. Timed: the clear, the draw
+ * and glFinish; not timed: the context, the shaders, the upload. With one
+ * thread the time is the CPU time of the whole process (with
+ * LP_NUM_THREADS=1 llvmpipe rasterizes in a thread of its own): the lessons'
+ * measure, which other programs on the machine do not inflate; with all
+ * cores it is the wall clock, the only one that shows threads working
+ * together. The CSV
  * lines are measure.h's; the fragment count is the GPU's own, an occlusion
  * query over one draw with the depth test passing everything. */
 #define GL_GLEXT_PROTOTYPES 1
@@ -35,7 +39,6 @@
 /* The workload's triangles in clip space, y_c negated (gl.h, flip-y). */
 static bool workload_vertices(const Workload *w, Vertices *v, Error *err)
 {
-    double n = w->ctx.near, f = w->ctx.far;
     v->n = (int)(3 * w->ntris);
     v->pos = malloc((size_t)v->n * 4 * sizeof *v->pos);
     v->id = malloc((size_t)v->n * sizeof *v->id);
@@ -46,12 +49,11 @@ static bool workload_vertices(const Workload *w, Vertices *v, Error *err)
         const ScreenFace *face = &w->faces[i];
         for (int t = 0; t < face->n - 2; t++)
             for (int c = 0; c < 3; c++, k++) {
-                ScreenVertex s = face->v[face->tris[t].c[c]];
-                double d = s.d;
-                v->pos[4 * k + 0] = (float)((2 * s.x / w->width - 1) * d);
-                v->pos[4 * k + 1] = (float)((2 * s.y / w->height - 1) * d); /* -(1 - 2y/H) d */
-                v->pos[4 * k + 2] = (float)(((f + n) * d - 2 * f * n) / (f - n));
-                v->pos[4 * k + 3] = (float)d;
+                Vec4 q = face->clip[face->tris[t].c[c]];
+                v->pos[4 * k + 0] = (float)q.x;
+                v->pos[4 * k + 1] = (float)-q.y;
+                v->pos[4 * k + 2] = (float)q.z;
+                v->pos[4 * k + 3] = (float)q.w;
                 v->id[k] = face->face;
             }
     }
@@ -142,7 +144,8 @@ int main(int argc, char **argv)
     const char *threads = getenv("LP_NUM_THREADS");
     if (!threads) {
         long cores = sysconf(_SC_NPROCESSORS_ONLN);
-        int status = run_with_threads(argv, 1);
+        int status = run_with_threads(argv, 0);
+        status = status != 0 ? status : run_with_threads(argv, 1);
         return status != 0 ? status : run_with_threads(argv, cores > 0 ? cores : 1);
     }
     char name[64];
@@ -155,7 +158,7 @@ int main(int argc, char **argv)
         Error err;
         bool ok = workload_build(&w, (WorkloadKind)k, &err);
         if (ok) {
-            ok = measure_workload(name, &w, reps, strcmp(threads, "1") == 0, &m, &err);
+            ok = measure_workload(name, &w, reps, atoi(threads) <= 1, &m, &err);
             workload_free(&w);
         }
         if (!ok) {
