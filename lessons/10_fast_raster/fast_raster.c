@@ -7,6 +7,7 @@
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "extras/engine.h"
 #include "state.h"
@@ -17,6 +18,7 @@
 #define LAST (BLOCK_SIZE - 1)           /* a block's last pixel, from its first */
 #define SHORT_EDGE (1 << 27)     /* |a| + |b| below it: a block's values fit in 32 bits */
 #define FLUSH_POLYGONS (1 << 13) /* drawn once this many wait: the bins stay small */
+#define OWN_WORK (4 * TILE_SIZE * TILE_SIZE) /* pixels of boxes: a tile in its own memory */
 
 static int imin(int a, int b) { return a < b ? a : b; }
 static int imax(int a, int b) { return a > b ? a : b; }
@@ -102,7 +104,7 @@ static void set_up_polygon(const Primitive *q, const Corner *c, int n, int turn)
     Bins *b = bins_of(t, q->state);
     bool room = b && b->npoly < FLUSH_POLYGONS && bins_room(b, &p, n);
     if (b && !room) /* draw what waits, then there is room */
-        fast_finish(t, q->state, NULL), room = bins_room(b, &p, n);
+        fast_flush(t, q->state), room = bins_room(b, &p, n);
     if (room)
         bin_polygon(b, &p, c, n);
     else
@@ -171,13 +173,17 @@ static uint64_t block_coverage(const TileWork *w, const EdgeFn *e, uint32_t n, i
  * buffer (a tile is a block; a window is not asked) says none can pass,
  * else tested by the kernel (plain C where the screen cuts a row short),
  * which hands back the block's farthest value when it read all. plane:
- * p's, as lesson 09's hiz_bound takes it. */
-static void draw_block(TileWork *w, const Poly *p, const Primitive *plane, int x0, int y0,
-                       uint64_t mask, bool window)
+ * p's, as lesson 09's hiz_bound takes it; farthest: its farthest value
+ * over its part of the tile. */
+static void draw_block(TileWork *w, const Poly *p, const Primitive *plane, float farthest,
+                       int x0, int y0, uint64_t mask, bool window)
 {
     Target *t = w->t;
-    HierarchicalZ *h = window ? NULL : w->hiz;
+    HierarchicalZ *h = window ? NULL : w->hiz, *ask = h;
     int k = h ? y0 / BLOCK_SIZE * h->tiles_x + x0 / BLOCK_SIZE : 0;
+    bool reversed = w->s->depth.mapping == REVERSED;
+    if (h && !(reversed ? farthest < h->far[k] : farthest > h->far[k]))
+        h->tiles_tested++, ask = NULL; /* p is nowhere farther than the block: asked, not skipped */
     if (w->fr->count) { /* every fragment counted, one by one */
         for (int bit = 0; bit < BLOCK_SIZE * BLOCK_SIZE; bit++)
             if (mask >> bit & 1)
@@ -187,18 +193,18 @@ static void draw_block(TileWork *w, const Poly *p, const Primitive *plane, int x
     /* SOLUTION BEGIN: lesson 09's question, per block: the plane's nearest
      * value over the block's part of the box against the block's farthest. */
     int x1 = imin(x0 + LAST, p->x1 - 1), y1 = imin(y0 + LAST, p->y1 - 1);
-    float nearest = h ? hiz_bound(plane, imax(x0, p->x0), imax(y0, p->y0), x1, y1, true) : 0;
-    if (h && hiz_skips(h, &w->s->depth, k, nearest))
+    float nearest = ask ? hiz_bound(plane, imax(x0, p->x0), imax(y0, p->y0), x1, y1, true) : 0;
+    if (ask && hiz_skips(ask, &w->s->depth, k, nearest))
         return;
     /* SOLUTION STUB
-    (void)plane;
+    (void)plane, (void)ask;
     */
     /* SOLUTION END */
     const BlockKernels *kernels = p->plain || x0 + BLOCK_SIZE > t->width ? &PLAIN_KERNELS : w->k;
-    size_t i = (size_t)y0 * (size_t)t->width + (size_t)x0;
+    size_t i = (size_t)(y0 - w->oy) * w->stride + (size_t)(x0 - w->ox);
     float far;
-    uint64_t passed = kernels->depth_test(t->depth + i, t->face + i, (size_t)t->width, x0, y0,
-                                          mask, &p->depth, &far);
+    uint64_t passed = kernels->depth_test(w->depth + i, w->face + i, w->stride, x0, y0, mask,
+                                          &p->depth, &far);
     if (t->counting) /* the summary's totals, only when asked for; a hole is never tested */
         w->stats.tested += popcount(mask & p->depth.keep),
             w->stats.passed += popcount(passed & p->depth.keep);
@@ -218,11 +224,12 @@ static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
     uint64_t mask;
     for (int k = 0; k < windows; k++) /* small: its pixels in 8 x 8 windows */
         if ((mask = block_coverage(w, e, p->n, win[k].x, win[k].y, win[k].box)))
-            draw_block(w, p, &plane, win[k].x, win[k].y, mask, true);
+            draw_block(w, p, &plane, 0, win[k].x, win[k].y, mask, true);
     if (windows > 0)
         return;
     int x0 = imax(p->x0, w->tx0), x1 = imin(p->x1, w->tx1);
     int y0 = imax(p->y0, w->ty0), y1 = imin(p->y1, w->ty1);
+    float farthest = w->hiz ? hiz_bound(&plane, x0, y0, x1 - 1, y1 - 1, false) : 0;
     EdgeFn crossing[POLYGON_MAX_CORNERS];
     uint32_t n = 0;
     for (uint32_t k = 0; k < p->n; k++) {
@@ -238,25 +245,85 @@ static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
             uint64_t box = box_mask(imax(p->x0 - bx, 0), imin(p->x1 - bx, BLOCK_SIZE),
                                     imax(p->y0 - by, 0), imin(p->y1 - by, BLOCK_SIZE));
             if ((mask = n > 0 ? block_coverage(w, crossing, n, bx, by, box) : box))
-                draw_block(w, p, &plane, bx, by, mask, false);
+                draw_block(w, p, &plane, farthest, bx, by, mask, false);
         }
 }
 
 /* ---- Tiles and threads ------------------------------------------------- */
 
-/* One tile: each block's farthest value, then its polygons in order, b's first. */
-static void draw_tile(TileWork *w, const Bins *b, int tile)
+/* The pixels of the tile that its polygons' boxes hold, in all. */
+static long tile_work(const TileWork *w, const Bins *b, int tile)
 {
-    w->tx0 = tile % b->tiles_x * TILE_SIZE, w->ty0 = tile / b->tiles_x * TILE_SIZE;
-    w->tx1 = imin(w->tx0 + TILE_SIZE, w->t->width), w->ty1 = imin(w->ty0 + TILE_SIZE, w->t->height);
+    long work = 0;
     for (; b; b = b->next)
         for (size_t k = 0; k < b->bin[tile].n; k++) {
             const Poly *p = &b->poly[b->bin[tile].at[k]];
-            (w->fr->simd == SIMD_PIXELS ? draw_pixels : draw_in_tile)(w, p, &b->edge[p->first]);
+            work += (long)(imin(p->x1, w->tx1) - imax(p->x0, w->tx0)) *
+                    (imin(p->y1, w->ty1) - imax(p->y0, w->ty0));
         }
+    return work;
 }
 
-typedef struct { const Bins *b; const int *tiles; int ntiles; atomic_int next; } Work;
+/* Where the tile is drawn. Much work (its boxes hold OWN_WORK pixels or
+ * more): in memory of its own (TileWork.tile_depth, rows TILE_SIZE apart),
+ * where a 64 x 64 tile's depth and faces fill 32 KB, as a core's first
+ * cache holds them; in the target, rows a power of two apart share the
+ * cache's few places for their addresses. Little work: in the target.
+ * Either way a tile cleared since is cleared there first (a tile of its own
+ * memory, read from the target else). */
+static void tile_memory(TileWork *w, Bins *b, int tile)
+{
+    Target *t = w->t;
+    bool own = !w->fr->count && tile_work(w, b, tile) >= OWN_WORK; /* counting: the target's */
+    bool clear = b->cleared && b->cleared[tile];
+    w->depth = own ? w->tile_depth : t->depth, w->face = own ? w->tile_face : t->face;
+    w->stride = own ? TILE_SIZE : (size_t)t->width;
+    w->ox = own ? w->tx0 : 0, w->oy = own ? w->ty0 : 0;
+    size_t n = (size_t)(w->tx1 - w->tx0);
+    for (int y = w->ty0; (own || clear) && y < w->ty1; y++) {
+        float *depth = w->depth + (size_t)(y - w->oy) * w->stride + (size_t)(w->tx0 - w->ox);
+        int32_t *face = w->face + (size_t)(y - w->oy) * w->stride + (size_t)(w->tx0 - w->ox);
+        size_t from = (size_t)y * (size_t)t->width + (size_t)w->tx0;
+        if (clear)
+            for (size_t i = 0; i < n; i++)
+                depth[i] = b->clear, face[i] = NO_FACE;
+        else
+            memcpy(depth, t->depth + from, n * sizeof *depth),
+                memcpy(face, t->face + from, n * sizeof *face);
+    }
+    if (clear)
+        b->cleared[tile] = false;
+}
+
+/* The tile's own memory back into the target's, row by row. */
+static void write_tile(TileWork *w)
+{
+    Target *t = w->t;
+    size_t n = (size_t)(w->tx1 - w->tx0);
+    for (int y = w->ty0; y < w->ty1; y++) {
+        size_t from = (size_t)(y - w->ty0) * TILE_SIZE;
+        size_t to = (size_t)y * (size_t)t->width + (size_t)w->tx0;
+        memcpy(t->depth + to, w->depth + from, n * sizeof *t->depth);
+        memcpy(t->face + to, w->face + from, n * sizeof *t->face);
+    }
+}
+
+/* One tile: its polygons in order, b's first. */
+static void draw_tile(TileWork *w, Bins *b, int tile)
+{
+    w->tx0 = tile % b->tiles_x * TILE_SIZE, w->ty0 = tile / b->tiles_x * TILE_SIZE;
+    w->tx1 = imin(w->tx0 + TILE_SIZE, w->t->width), w->ty1 = imin(w->ty0 + TILE_SIZE, w->t->height);
+    tile_memory(w, b, tile);
+    for (const Bins *c = b; c; c = c->next)
+        for (size_t k = 0; k < c->bin[tile].n; k++) {
+            const Poly *p = &c->poly[c->bin[tile].at[k]];
+            (w->fr->simd == SIMD_PIXELS ? draw_pixels : draw_in_tile)(w, p, &c->edge[p->first]);
+        }
+    if (w->depth == w->tile_depth)
+        write_tile(w);
+}
+
+typedef struct { Bins *b; const int *tiles; int ntiles; atomic_int next; } Work;
 
 typedef struct { _Alignas(64) Work *work; TileWork tw; } Thread; /* no cache line shared */
 
@@ -270,7 +337,8 @@ static void *draw_tiles(void *arg)
     return NULL;
 }
 
-bool fast_finish(Target *t, LessonState *s, Error *err)
+/* Draws every tile's bin; finish: and clears every tile not yet cleared. */
+static bool draw_bins(Target *t, LessonState *s, bool finish, Error *err)
 {
     FastRaster *fr = &s->fast;
     if (fr->set_up_only)
@@ -283,7 +351,7 @@ bool fast_finish(Target *t, LessonState *s, Error *err)
     Thread *th = tiles ? aligned_alloc(64, (size_t)nthreads * sizeof *th) : NULL;
     pthread_t *id = th ? malloc((size_t)nthreads * sizeof *id) : NULL;
     for (int k = 0; id && k < ntiles; k++)
-        if (tile_busy(b, k))
+        if (tile_busy(b, k) || (finish && b->cleared && b->cleared[k]))
             tiles[busy++] = k;
     Work work = {.b = b, .tiles = tiles, .ntiles = busy};
     atomic_init(&work.next, 0);
@@ -300,11 +368,23 @@ bool fast_finish(Target *t, LessonState *s, Error *err)
         tile_work_end(&th[i].tw);
     }
     bins_empty(b);
+    if (b && id && finish)
+        b->clearing = false;
     free(id), free(th), free(tiles);
     fr->out_of_memory = fr->out_of_memory || (b && !id);
     if (fr->out_of_memory && err)
         error_set(err, "out of memory for the bins and tiles: the picture is not whole");
     return !fr->out_of_memory;
+}
+
+bool fast_finish(Target *t, LessonState *s, Error *err)
+{
+    return draw_bins(t, s, true, err);
+}
+
+void fast_flush(Target *t, LessonState *s)
+{
+    draw_bins(t, s, false, NULL);
 }
 
 const Rasterizer FAST_ZBUFFER = {

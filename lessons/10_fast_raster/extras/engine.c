@@ -88,24 +88,29 @@ void bins_free(Bins *b)
     for (int k = 0; b && k < b->tiles_x * b->tiles_y; k++)
         free(b->bin[k].at);
     if (b)
-        free(b->bin), free(b->poly), free(b->edge);
+        free(b->bin), free(b->poly), free(b->edge), free(b->cleared);
     free(b);
 }
 
-/* The bins of target t, drawing what waits for another target first. */
+/* The bins of target t, finishing the picture of another target first. The
+ * engine's own (not a thread's copy setting faces up) knows which tiles are
+ * yet to be cleared, when there is room for it. */
 Bins *bins_of(Target *t, LessonState *s)
 {
     FastRaster *fr = &s->fast;
     Bins *b = fr->bins;
-    if (b && b->target != t && b->npoly > 0)
+    if (b && b->target != t && (b->npoly > 0 || b->clearing))
         fast_finish((Target *)b->target, s, NULL);
     int tiles_x = (t->width + TILE_SIZE - 1) / TILE_SIZE;
     int tiles_y = (t->height + TILE_SIZE - 1) / TILE_SIZE;
     if (!b || b->tiles_x != tiles_x || b->tiles_y != tiles_y) {
         bins_free(b);
         fr->bins = b = calloc(1, sizeof *b);
-        if (b && !(b->bin = calloc((size_t)(tiles_x * tiles_y), sizeof *b->bin)))
+        size_t tiles = (size_t)tiles_x * (size_t)tiles_y;
+        if (b && !(b->bin = calloc(tiles, sizeof *b->bin)))
             free(b), fr->bins = b = NULL;
+        if (b && !fr->set_up_only)
+            b->cleared = calloc(tiles, sizeof *b->cleared); /* NULL: cleared at once */
         if (b)
             b->tiles_x = tiles_x, b->tiles_y = tiles_y;
     }
@@ -205,19 +210,19 @@ bool corner_in_range(const ScreenVertex *v)
 bool test_pixel(TileWork *w, const BlockDepth *d, int x, int y)
 {
     Target *t = w->t;
-    size_t i = (size_t)y * (size_t)t->width + (size_t)x;
+    size_t i = (size_t)(y - w->oy) * w->stride + (size_t)(x - w->ox);
     if (!(d->keep >> ((y % BLOCK_SIZE) * BLOCK_SIZE + x % BLOCK_SIZE) & 1))
         return false;
     float z_w = d->a0 + d->gx * (float)x + d->gy * (float)y + d->offset;
-    float value = encode_depth(d->format, z_w), stored = t->depth[i];
+    float value = encode_depth(d->format, z_w), stored = w->depth[i];
     bool passed = d->reversed ? value > stored : value < stored;
-    if (w->fr->count)
+    if (w->fr->count) /* counting draws in the target's own memory */
         target_record(t, i, d->face, value, stored, passed);
     else
         w->stats.tested++, w->stats.passed += passed;
     if (passed) {
-        t->depth[i] = value;
-        t->face[i] = d->face;
+        w->depth[i] = value;
+        w->face[i] = d->face;
     }
     return passed;
 }
@@ -320,10 +325,24 @@ void draw_pixels(TileWork *w, const Poly *p, const EdgeFn *e)
         }
 }
 
-/* Nothing waits any more: the picture starts again. */
+/* Nothing waits any more: the picture starts again. Each tile is cleared
+ * when it is first drawn, by the thread that draws it, or at fast_finish
+ * (fast_raster.c), not now: lesson 09's hiz_clear of one pixel gives every
+ * tile of the tile buffer the far plane. Counting clears at once. */
 void clear_fast(Target *t, LessonState *s)
 {
-    bins_empty(s->fast.bins);
-    s->fast.out_of_memory = false;
-    hiz_clear(t, s);
+    FastRaster *fr = &s->fast;
+    bins_empty(fr->bins);
+    fr->out_of_memory = false;
+    Bins *b = fr->count ? NULL : bins_of(t, s);
+    if (!b || !b->cleared) {
+        hiz_clear(t, s);
+        return;
+    }
+    int32_t face;
+    Target pixel = {.width = 1, .height = 1, .depth = &b->clear, .face = &face};
+    hiz_clear(&pixel, s);
+    for (int k = 0; k < b->tiles_x * b->tiles_y; k++)
+        b->cleared[k] = true;
+    b->clearing = true;
 }

@@ -29,14 +29,21 @@ struct Bins {
     Poly *poly; size_t npoly, cap_poly;
     EdgeFn *edge; size_t nedge, cap_edge;
     Bin *bin; /* one per tile, row by row */
+    bool *cleared; /* per tile: cleared since, its pixels not (NULL: cleared at once) */
+    bool clearing; /* some tile is: fast_finish clears it */
+    float clear;   /* the cleared depth value */
 };
 
 typedef struct { /* what one thread needs to draw a tile */
     Target *t; LessonState *s; const FastRaster *fr; const BlockKernels *k;
     FragmentStats stats;
     int tx0, ty0, tx1, ty1; /* its pixels on the screen */
+    float *depth; int32_t *face; /* pixel (x, y): [(y - oy) stride + x - ox] */
+    size_t stride; int ox, oy;   /* in memory, the tile's own or the target's (0, 0) */
     HierarchicalZ *hiz;     /* &own, or NULL: none */
     HierarchicalZ own;      /* the tile buffer, with this thread's counts */
+    _Alignas(64) float tile_depth[TILE_SIZE * TILE_SIZE]; /* a tile's own memory */
+    int32_t tile_face[TILE_SIZE * TILE_SIZE];
 } TileWork;
 
 uint64_t popcount(uint64_t mask);
@@ -47,6 +54,7 @@ Bins *bins_of(Target *t, LessonState *s);
 bool bins_room(Bins *b, const Poly *p, int n); /* for p, of n corners */
 void bins_empty(Bins *b); /* and the bins chained after it, unchained */
 bool tile_busy(const Bins *b, int tile); /* a polygon in it, in b or after */
+void fast_flush(Target *t, LessonState *s); /* the bins drawn, the frame not finished */
 void draw_fast_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx);
 void set_up_held_faces(Target *t, LessonState *s); /* held.c: by the threads, in chained bins */
 /* p's plane and format; plain: not finite. */

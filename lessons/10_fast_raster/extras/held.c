@@ -37,7 +37,7 @@ bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext
         return false;
     Held *h = fr->held;
     if (h->nface >= HOLD_MAX)
-        fast_finish(t, s, NULL);
+        fast_flush(t, s);
     void *face = h->face, *v = h->v, *clip = h->clip, *tri = h->tri;
     size_t n = (size_t)f->n;
     bool ok = grow_array(&face, &h->cap_face, h->nface + 1, sizeof *h->face) &&
@@ -46,7 +46,7 @@ bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext
               grow_array(&tri, &h->cap_tri, h->ntri + n - 2, sizeof *h->tri);
     h->face = face, h->v = v, h->clip = clip, h->tri = tri;
     if (!ok) {
-        fast_finish(t, s, NULL); /* what was held, first: then this face is set up now */
+        fast_flush(t, s); /* what was held, first: then this face is set up now */
         return false;
     }
     memcpy(h->v + h->nv, f->v, n * sizeof *f->v);
