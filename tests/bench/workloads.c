@@ -162,6 +162,11 @@ static bool build_projected(Workload *w, const char *scene, Mesh *m, Error *err)
         if (render_face_dropped(r, i))
             continue;
         w->faces[w->nfaces] = render_screen_face(r, i);
+        if (w->faces[w->nfaces].n > WORKLOAD_MAX_CORNERS) {
+            workload_free(w);
+            return error_set(err, "face %d of '%s' has more than %d corners", i, scene,
+                             WORKLOAD_MAX_CORNERS);
+        }
         w->ntris += w->faces[w->nfaces].n - 2;
         w->nfaces++;
     }
@@ -239,10 +244,12 @@ void workload_draw(Workload *w, Target *t, const Rasterizer *rz)
 {
     DrawContext ctx = w->ctx;
     ctx.width = t->width, ctx.height = t->height;
-    for (long k = 0; k < w->ncorners; k++)
-        w->corners[k] = camera_divide(w->clip[k], t->width, t->height);
+    ScreenVertex v[WORKLOAD_MAX_CORNERS];
     for (int i = 0; i < w->nfaces; i++) {
         ScreenFace f = w->faces[i];
+        for (int k = 0; k < f.n; k++) /* as corners[] holds them */
+            v[k] = camera_divide(f.clip[k], t->width, t->height);
+        f.v = v;
         if (!rz->clips)
             f.clip = NULL;
         rz->draw_face(t, rz->state, &f, &ctx);

@@ -82,12 +82,15 @@ typedef struct {
     Vec4 *verts_clip;     /* ... and the same in clip space */
     Render render;        /* the mesh workload: mesh, camera, projected corners */
     bool has_render;
-    /* Every corner of every face: clip[k] in clip space, divided by each
-     * frame into corners[k], where the faces' v point (verts, or render's). */
+    /* Every corner of every face: clip[k] in clip space, and corners[k] on
+     * the screen, where the faces' v point (verts, or render's). A frame
+     * divides each face's corners anew, as they come. */
     const Vec4 *clip;
     ScreenVertex *corners;
     long ncorners;
 } Workload;
+
+#define WORKLOAD_MAX_CORNERS 64 /* of a face: the knot's and city's have 3 or 4 */
 
 const char *workload_name(WorkloadKind kind);
 
@@ -96,10 +99,10 @@ const char *workload_name(WorkloadKind kind);
 bool workload_build(Workload *w, WorkloadKind kind, Error *err);
 void workload_free(Workload *w);
 
-/* One frame of w: every corner divided (camera_divide) and put on t, then
- * every face, in order, straight into the lesson's draw_face, with its
- * clip-space corners if the lesson clips: no drop test, nothing but the
- * pipeline from clip space on. t must be w's size. */
+/* One frame of w: every face, in order, its corners divided (camera_divide)
+ * and put on t, straight into the lesson's draw_face, with its clip-space
+ * corners if the lesson clips: no drop test, nothing but the pipeline from
+ * clip space on. t must be w's size. */
 void workload_draw(Workload *w, Target *t, const Rasterizer *rz);
 
 /* A 64-bit FNV-1a hash of the depth buffer's bytes: two buffers with the same

@@ -251,7 +251,9 @@ Primitive plane_of(const TileWork *w, const BlockDepth *d)
 void tile_work_begin(TileWork *w, Target *t, LessonState *s)
 {
     const FastRaster *fr = &s->fast;
-    *w = (TileWork){.t = t, .s = s, .fr = fr, .k = kernels_of(fr->count ? SIMD_NONE : fr->simd)};
+    /* field by field: a compound literal would clear the tile's memory too */
+    w->t = t, w->s = s, w->fr = fr, w->k = kernels_of(fr->count ? SIMD_NONE : fr->simd);
+    w->stats = (FragmentStats){0};
     w->hiz = s->hiz && s->hiz->tile == BLOCK_SIZE ? &w->own : NULL;
     if (w->hiz)
         w->own = *s->hiz, w->own.tiles_tested = w->own.tiles_skipped = 0;
