@@ -5,6 +5,8 @@
  *   blocks   edge functions at a block's corners take or reject it whole;
  *            a block an edge crosses is tested per pixel (lesson 04's rule)
  *   depth    lessons 06 to 09's: a block lesson 09's tile buffer hides is skipped
+ *   memory   a busy tile drawn in 32 KB of its thread's own; each tile cleared
+ *            when it is first drawn, or at fast_finish
  *   SIMD     a block row at once: SSE2 4 pixels, AVX2 8
  *   threads  tiles handed out one at a time: no two share a pixel */
 #ifndef FAST_RASTER_H
@@ -34,13 +36,14 @@ typedef struct {
 /* The lesson's state (state.h): depth, the engine, no tile buffer yet. */
 LessonState fast_raster(DepthSetup depth, Simd simd, int threads, bool count);
 Simd simd_best(void);
-/* Draws every tile's bin. False, with err (when not NULL) set, when memory
- * ran out for a face or a tile since the clear: the picture is not whole. */
+/* Draws every tile's bin and clears every tile not yet cleared: the picture
+ * is done. False, with err (when not NULL) set, when memory ran out for a
+ * face or a tile since the clear: the picture is not whole. */
 bool fast_finish(Target *t, LessonState *s, Error *err);
 void fast_raster_free(FastRaster *fr);
 
-/* hiz_clear; each face set up as lesson 07 sets it up, its polygons
- * binned; then fast_finish draws them. */
+/* The clear (each tile's waits for it to be drawn); each face set up as
+ * lesson 07 sets it up, its polygons binned; then fast_finish draws them. */
 extern const Rasterizer FAST_ZBUFFER;
 
 #endif

@@ -35,7 +35,7 @@ int main(int argc, char **argv)
     }
     state.hiz = &h;
     run.rasterizer.state = &state;                     /* the format, the engine, the tiles */
-    run.rz->clear(&run.target, run.rz->state);         /* clear: the far plane, every tile */
+    run.rz->clear(&run.target, run.rz->state);         /* clear: each tile, when drawn */
     if (run_draw(&run) &&                              /* draw: each face set up, binned */
         fast_finish(&run.target, &state, &run.err) &&  /* ... then drawn, tile by tile */
         run_write(&run))                               /* write: the pictures asked for */

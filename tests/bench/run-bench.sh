@@ -5,7 +5,8 @@
 # prints one table and writes OUT_DIR/results.csv. Every binary prints CSV
 # lines with the columns of tests/bench/measure.h; here they get the derived
 # figures: million triangles and million fragments per second, nanoseconds
-# per fragment, and the ratio of fragments per second to the limit's.
+# per triangle and per fragment, and the ratio of fragments per second to
+# the limit's.
 # When Mesa's llvmpipe is among them (rows llvmpipe_0t and llvmpipe_1t, timed
 # in CPU time of the process, and llvmpipe_Nt, all cores, by the wall clock),
 # a second table gives each lesson's speed as a multiple of llvmpipe's on the
@@ -39,7 +40,8 @@ function check(what, got, want) {
 }
 BEGIN {
     print("lesson,workload,width,height,reps,triangles,fragments,median_s,min_s,max_s," \
-          "mtri_per_s,mfrag_per_s,ns_per_fragment,ratio_to_limit,spread,depth_checksum") > csv
+          "mtri_per_s,ns_per_triangle,mfrag_per_s,ns_per_fragment,ratio_to_limit,spread," \
+          "depth_checksum") > csv
 }
 NR == 1 {
     # BENCH_WARMUP and BENCH_REPS of tests/bench/measure.h
@@ -47,8 +49,8 @@ NR == 1 {
     printf("a frame: clear, every corner from clip space on, draw; llvmpipe: clear, draw and\n")
     printf("glFinish; CPU time for 0 or 1 thread, wall clock for N);\n")
     printf("median time; spread = (slowest - fastest) / median\n\n")
-    printf("%-22s %-19s %9s %10s %9s %7s %8s %8s %8s %8s\n", "lesson", "workload", "triangles",
-           "fragments", "median ms", "spread", "Mtri/s", "Mfrag/s", "ns/frag", "x limit")
+    printf("%-22s %-19s %9s %10s %9s %7s %8s %8s %8s %8s %8s\n", "lesson", "workload", "triangles",
+           "fragments", "median ms", "spread", "Mtri/s", "ns/tri", "Mfrag/s", "ns/frag", "x limit")
 }
 {
     lesson = $1; workload = $2; tris = $6 + 0; frags = $7 + 0; med = $8; lo = $9; hi = $10
@@ -62,12 +64,12 @@ NR == 1 {
     mtri = (tris > 0) ? sprintf("%.3g", tris / med / 1e6) : "-"
     ntri = (tris > 0) ? tris : "-"
     nsf = (frags > 0) ? med / frags * 1e9 : 0
-    printf("%-22s %-19s %9s %10d %9.2f %6.1f%% %8s %8.1f %8.2f %8.2f\n", lesson, workload,
-           ntri, frags, med * 1e3, spread * 100, mtri, mfrag, nsf, ratio)
-    printf("%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%.3f,%.4f,%.4f,%.4f,%s\n", lesson, workload,
+    nst = (tris > 0) ? sprintf("%.1f", med / tris * 1e9) : "-"
+    printf("%-22s %-19s %9s %10d %9.2f %6.1f%% %8s %8s %8.1f %8.2f %8.2f\n", lesson, workload,
+           ntri, frags, med * 1e3, spread * 100, mtri, nst, mfrag, nsf, ratio)
+    printf("%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%.3f,%.4f,%.4f,%.4f,%s\n", lesson, workload,
            $3, $4, $5, tris, frags, med, lo, hi, (tris > 0) ? sprintf("%.6g", tris / med / 1e6) : "",
-           mfrag, nsf, ratio,
-           spread, $11) > csv
+           (tris > 0) ? nst : "", mfrag, nsf, ratio, spread, $11) > csv
     rows++
     row_lesson[rows] = lesson
     row_workload[rows] = workload

@@ -69,6 +69,6 @@ typedef struct { int x, y; uint64_t box; } Window; /* 8 x 8 pixels at (x, y), of
 int windows_of(const TileWork *w, const Poly *p, Window win[4]); /* 0: p larger */
 void draw_pixels(TileWork *w, const Poly *p, const EdgeFn *e); /* --simd pixels */
 uint64_t long_edge_coverage(const EdgeFn *e, int64_t at); /* at: e at the block's first */
-void clear_fast(Target *t, LessonState *s); /* and lesson 09's hiz_clear */
+void clear_fast(Target *t, LessonState *s); /* each tile cleared when first drawn */
 
 #endif
