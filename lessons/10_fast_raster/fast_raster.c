@@ -78,7 +78,7 @@ static void bin_polygon(Bins *b, Poly *p, const Corner *c, int n)
                 outside = edge_max(&e[k], x0, y0, w, h) < 0;
             Bin *bin = &b->bin[ty * b->tiles_x + tx];
             if (!outside) /* bins_room made room */
-                bin->at[bin->n++] = (uint32_t)b->npoly;
+                bin->at[bin->n++] = (uint32_t)b->npoly, bin->work += (long)(w + 1) * (h + 1);
         }
     b->nedge += p->n;
     b->poly[b->npoly++] = *p;
@@ -252,15 +252,11 @@ static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
 /* ---- Tiles and threads ------------------------------------------------- */
 
 /* The pixels of the tile that its polygons' boxes hold, in all. */
-static long tile_work(const TileWork *w, const Bins *b, int tile)
+static long tile_work(const Bins *b, int tile)
 {
     long work = 0;
     for (; b; b = b->next)
-        for (size_t k = 0; k < b->bin[tile].n; k++) {
-            const Poly *p = &b->poly[b->bin[tile].at[k]];
-            work += (long)(imin(p->x1, w->tx1) - imax(p->x0, w->tx0)) *
-                    (imin(p->y1, w->ty1) - imax(p->y0, w->ty0));
-        }
+        work += b->bin[tile].work;
     return work;
 }
 
@@ -274,7 +270,7 @@ static long tile_work(const TileWork *w, const Bins *b, int tile)
 static void tile_memory(TileWork *w, Bins *b, int tile)
 {
     Target *t = w->t;
-    bool own = !w->fr->count && tile_work(w, b, tile) >= OWN_WORK; /* counting: the target's */
+    bool own = !w->fr->count && tile_work(b, tile) >= OWN_WORK; /* counting: the target's */
     bool clear = b->cleared && b->cleared[tile];
     w->depth = own ? w->tile_depth : t->depth, w->face = own ? w->tile_face : t->face;
     w->stride = own ? TILE_SIZE : (size_t)t->width;

@@ -69,7 +69,7 @@ void bins_empty(Bins *b)
 {
     for (Bins *next; b; b = next) {
         for (int k = 0; k < b->tiles_x * b->tiles_y; k++)
-            b->bin[k].n = 0;
+            b->bin[k].n = 0, b->bin[k].work = 0;
         b->npoly = b->nedge = 0;
         next = b->next, b->next = NULL; /* the chain is made anew at each finish */
     }

@@ -21,7 +21,8 @@ typedef struct {
     int turn;
 } Poly;
 
-typedef struct { uint32_t *at; size_t n, cap; } Bin; /* polygons, in the order drawn */
+typedef struct { uint32_t *at; size_t n, cap; long work; } Bin; /* polygons, in the order
+                                                                 drawn; their boxes' pixels */
 
 struct Bins {
     const Target *target; int tiles_x, tiles_y;
