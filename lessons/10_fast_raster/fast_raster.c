@@ -181,15 +181,15 @@ static void draw_block(TileWork *w, const Poly *p, const Primitive *plane, float
     Target *t = w->t;
     HierarchicalZ *h = window ? NULL : w->hiz, *ask = h;
     int k = h ? y0 / BLOCK_SIZE * h->tiles_x + x0 / BLOCK_SIZE : 0;
-    bool reversed = w->s->depth.mapping == REVERSED;
-    if (h && !(reversed ? farthest < h->far[k] : farthest > h->far[k]))
-        h->tiles_tested++, ask = NULL; /* p is nowhere farther than the block: asked, not skipped */
     if (w->fr->count) { /* every fragment counted, one by one */
         for (int bit = 0; bit < BLOCK_SIZE * BLOCK_SIZE; bit++)
             if (mask >> bit & 1)
                 test_pixel(w, &p->depth, x0 + (bit & LAST), y0 + bit / BLOCK_SIZE);
         return;
     }
+    bool reversed = w->s->depth.mapping == REVERSED;
+    if (h && !(reversed ? farthest < h->far[k] : farthest > h->far[k]))
+        h->tiles_tested++, ask = NULL; /* p is nowhere farther than the block: asked, not skipped */
     /* SOLUTION BEGIN: lesson 09's question, per block: the plane's nearest
      * value over the block's part of the box against the block's farthest. */
     int x1 = imin(x0 + LAST, p->x1 - 1), y1 = imin(y0 + LAST, p->y1 - 1);
@@ -364,8 +364,6 @@ static bool draw_bins(Target *t, LessonState *s, bool finish, Error *err)
         tile_work_end(&th[i].tw);
     }
     bins_empty(b);
-    if (b && id && finish)
-        b->clearing = false;
     free(id), free(th), free(tiles);
     fr->out_of_memory = fr->out_of_memory || (b && !id);
     if (fr->out_of_memory && err)

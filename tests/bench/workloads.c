@@ -62,7 +62,6 @@ static bool alloc_triangles(Workload *w, int ntris, Error *err)
         w->faces[i] = screen_triangle(&w->verts[3 * i], i);
         w->faces[i].clip = &w->verts_clip[3 * i];
     }
-    w->clip = w->verts_clip, w->corners = w->verts, w->ncorners = 3 * (long)ntris;
     return true;
 }
 
@@ -73,7 +72,7 @@ static bool alloc_triangles(Workload *w, int ntris, Error *err)
 static void screen_to_clip(Workload *w)
 {
     double n = w->ctx.near, f = w->ctx.far;
-    for (long k = 0; k < w->ncorners; k++) {
+    for (long k = 0; k < 3 * w->ntris; k++) {
         ScreenVertex s = w->verts[k];
         w->verts_clip[k] = vec4((2 * s.x / w->width - 1) * s.d, (1 - 2 * s.y / w->height) * s.d,
                                 ((f + n) * s.d - 2 * f * n) / (f - n), s.d);
@@ -147,8 +146,6 @@ static bool build_projected(Workload *w, const char *scene, Mesh *m, Error *err)
     w->has_render = true;
     w->ctx.near = cam.near;
     w->ctx.far = cam.far;
-    w->clip = w->render.clip, w->corners = w->render.corners;
-    w->ncorners = w->render.mesh.ncorners;
 
     /* The faces render_faces would draw, in mesh order (none is dropped
      * with this camera, but the rule is the pipeline's, not ours). */

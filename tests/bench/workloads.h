@@ -82,12 +82,6 @@ typedef struct {
     Vec4 *verts_clip;     /* ... and the same in clip space */
     Render render;        /* the mesh workload: mesh, camera, projected corners */
     bool has_render;
-    /* Every corner of every face: clip[k] in clip space, and corners[k] on
-     * the screen, where the faces' v point (verts, or render's). A frame
-     * divides each face's corners anew, as they come. */
-    const Vec4 *clip;
-    ScreenVertex *corners;
-    long ncorners;
 } Workload;
 
 #define WORKLOAD_MAX_CORNERS 64 /* of a face: the knot's and city's have 3 or 4 */

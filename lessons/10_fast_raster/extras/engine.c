@@ -83,6 +83,15 @@ bool tile_busy(const Bins *b, int tile)
     return false;
 }
 
+/* A tile of b's target still to be cleared (by fast_finish, at the latest). */
+static bool clearing(const Bins *b)
+{
+    for (int k = 0; b->cleared && k < b->tiles_x * b->tiles_y; k++)
+        if (b->cleared[k])
+            return true;
+    return false;
+}
+
 void bins_free(Bins *b)
 {
     for (int k = 0; b && k < b->tiles_x * b->tiles_y; k++)
@@ -99,7 +108,7 @@ Bins *bins_of(Target *t, LessonState *s)
 {
     FastRaster *fr = &s->fast;
     Bins *b = fr->bins;
-    if (b && b->target != t && (b->npoly > 0 || b->clearing))
+    if (b && b->target != t && (b->npoly > 0 || clearing(b)))
         fast_finish((Target *)b->target, s, NULL);
     int tiles_x = (t->width + TILE_SIZE - 1) / TILE_SIZE;
     int tiles_y = (t->height + TILE_SIZE - 1) / TILE_SIZE;
@@ -346,5 +355,4 @@ void clear_fast(Target *t, LessonState *s)
     hiz_clear(&pixel, s);
     for (int k = 0; k < b->tiles_x * b->tiles_y; k++)
         b->cleared[k] = true;
-    b->clearing = true;
 }

@@ -31,7 +31,6 @@ struct Bins {
     EdgeFn *edge; size_t nedge, cap_edge;
     Bin *bin; /* one per tile, row by row */
     bool *cleared; /* per tile: cleared since, its pixels not (NULL: cleared at once) */
-    bool clearing; /* some tile is: fast_finish clears it */
     float clear;   /* the cleared depth value */
 };
 
