@@ -475,7 +475,8 @@ $(BENCH_DIR)/obj/bench_%.o: tests/bench/bench.c | $(DEPS_OK)
 # Lesson 10 is timed in two rows, one thread and all cores, its depth buffer
 # unorm24 as llvmpipe's (tests/bench/bench_setup.h, fast_raster_setup.c).
 $(BENCH_DIR)/obj/bench_10_fast_raster.o: BENCH_DEFS := -DBENCH_SETUP -DBENCH_FINISH=fast_finish
-$(BENCH_DIR)/obj/tests/bench/fast_raster_setup.o: OBJ_INCLUDES += -I$(LESSON_TREE)/10_fast_raster
+$(BENCH_DIR)/obj/tests/bench/fast_raster_setup.o: OBJ_INCLUDES += -I$(LESSON_TREE)/10_fast_raster \
+                                                  -I$(LESSON_TREE)/10_fast_raster/extras
 $(BENCH_DIR)/bench_10_fast_raster: $(BENCH_DIR)/obj/tests/bench/fast_raster_setup.o
 
 $(BENCH_DIR)/obj/tests/gpu/%.o: OBJ_INCLUDES += $(GL_CFLAGS)

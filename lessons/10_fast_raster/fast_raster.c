@@ -1,15 +1,12 @@
-/* fast_raster.c: lesson 10's rasterizer, step by step (fast_raster.h). It
- * replaces lesson 04's scanline.c: draw_polygon still takes one convex
- * polygon at a time, but draws nothing until fast_finish. */
+/* fast_raster.c: lesson 10's rasterizer, step by step (fast_raster.h), in
+ * place of lesson 04's scanline.c: draw_polygon draws nothing till fast_finish. */
 #include "fast_raster.h"
 
 #include <math.h>
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdlib.h>
-#include <string.h>
 
-#include "extras/engine.h"
 #include "state.h"
 
 #define S ((int64_t)SUBPIXEL_ONE) /* sub-pixel units per pixel */
@@ -18,7 +15,6 @@
 #define LAST (BLOCK_SIZE - 1)           /* a block's last pixel, from its first */
 #define SHORT_EDGE (1 << 27)     /* |a| + |b| below it: a block's values fit in 32 bits */
 #define FLUSH_POLYGONS (1 << 13) /* drawn once this many wait: the bins stay small */
-#define OWN_WORK (4 * TILE_SIZE * TILE_SIZE) /* pixels of boxes: a tile in its own memory */
 
 static int imin(int a, int b) { return a < b ? a : b; }
 static int imax(int a, int b) { return a > b ? a : b; }
@@ -58,12 +54,12 @@ static int64_t edge_max(const EdgeFn *e, int x0, int y0, int w, int h)
 }
 
 /* p and its edges into the bin of every tile of its box no edge leaves out. */
-static void bin_polygon(Bins *b, Poly *p, const Corner *c, int n)
+static void bin_polygon(Bins *b, Poly *p, const Corner *c, int n, int turn)
 {
     p->first = (uint32_t)b->nedge;
     for (int k = 0; k < n; k++) {
         int next = k + 1 < n ? k + 1 : 0; /* clockwise: backwards when p turns the other way */
-        Corner from = c[p->turn < 0 ? n - 1 - k : k], to = c[p->turn < 0 ? n - 1 - next : next];
+        Corner from = c[turn < 0 ? n - 1 - k : k], to = c[turn < 0 ? n - 1 - next : next];
         if (from.x != to.x || from.y != to.y) /* a corner twice is no edge */
             b->edge[b->nedge + p->n++] = edge_function(from, to);
     }
@@ -93,7 +89,7 @@ static void set_up_polygon(const Primitive *q, const Corner *c, int n, int turn)
         lo.x = c[k].x < lo.x ? c[k].x : lo.x, hi.x = c[k].x > hi.x ? c[k].x : hi.x;
         lo.y = c[k].y < lo.y ? c[k].y : lo.y, hi.y = c[k].y > hi.y ? c[k].y : hi.y;
     }
-    Poly p = {.turn = turn, /* the pixel centres of the box, on the screen */
+    Poly p = {/* the pixel centres of the box, on the screen */
               .x0 = imin(t->width, imax(0, (int)first_centre_at_or_after(lo.x))),
               .y0 = imin(t->height, imax(0, (int)first_centre_at_or_after(lo.y))),
               .x1 = imax(0, imin(t->width, (int)floor_div(hi.x - HALF_PIXEL, S) + 1)),
@@ -104,30 +100,25 @@ static void set_up_polygon(const Primitive *q, const Corner *c, int n, int turn)
     Bins *b = bins_of(t, q->state);
     bool room = b && b->npoly < FLUSH_POLYGONS && bins_room(b, &p, n);
     if (b && !room) /* draw what waits, then there is room */
-        fast_flush(t, q->state), room = bins_room(b, &p, n);
+        fast_finish(t, q->state, NULL), room = bins_room(b, &p, n);
     if (room)
-        bin_polygon(b, &p, c, n);
+        bin_polygon(b, &p, c, n, turn);
     else
         q->state->fast.out_of_memory = true;
 }
 
-/* A convex polygon as lesson 04 takes it; false: it would draw its triangles.
- * It replaces lesson 04's walk, as lesson 09's tiles.c does: no 1/d is
- * stepped, and nothing is discarded beyond the far plane, which lesson 05's
- * clipper keeps every corner inside. */
+/* A convex polygon as lesson 04 takes it (false: draw its triangles), but no
+ * 1/d is stepped, and none is discarded beyond the far plane: lesson 05's
+ * clipper keeps every corner inside it. */
 bool draw_polygon(const Primitive *p, const ScreenVertex *v, int n, double far)
 {
     (void)far;
-    if (n < 3)
-        return true;
-    if (n > POLYGON_MAX_CORNERS)
-        return false;
+    if (n < 3 || n > POLYGON_MAX_CORNERS)
+        return n < 3; /* no area; or drawn as its triangles */
     Corner c[POLYGON_MAX_CORNERS];
-    for (int i = 0; i < n; i++) {
-        if (!corner_in_range(&v[i]))
+    for (int i = 0; i < n; i++)
+        if (!snap_corner(&v[i], &c[i])) /* as lesson 04 snaps it */
             return false;
-        c[i] = (Corner){snap(v[i].x), snap(v[i].y)};
-    }
     int turn; /* a triangle is convex: its turn is that of its snapped corners */
     if (n == 3) {
         int64_t cross = (c[1].x - c[0].x) * (c[2].y - c[1].y) - (c[1].y - c[0].y) * (c[2].x - c[1].x);
@@ -170,23 +161,14 @@ static uint64_t block_coverage(const TileWork *w, const EdgeFn *e, uint32_t n, i
 }
 
 /* The block's (or window's) pixels in mask: skipped when lesson 09's tile
- * buffer (a tile is a block; a window is not asked) says none can pass,
- * else tested by the kernel (plain C where the screen cuts a row short),
- * which hands back the block's farthest value when it read all. plane:
- * p's, as lesson 09's hiz_bound takes it; farthest: its farthest value
- * over its part of the tile. */
+ * buffer says none can pass (a window is not asked), else tested by the
+ * kernel (plain C where the screen cuts a row short). farthest: the plane's
+ * farthest value over p's part of the tile. */
 static void draw_block(TileWork *w, const Poly *p, const Primitive *plane, float farthest,
                        int x0, int y0, uint64_t mask, bool window)
 {
-    Target *t = w->t;
     HierarchicalZ *h = window ? NULL : w->hiz, *ask = h;
     int k = h ? y0 / BLOCK_SIZE * h->tiles_x + x0 / BLOCK_SIZE : 0;
-    if (w->fr->count) { /* every fragment counted, one by one */
-        for (int bit = 0; bit < BLOCK_SIZE * BLOCK_SIZE; bit++)
-            if (mask >> bit & 1)
-                test_pixel(w, &p->depth, x0 + (bit & LAST), y0 + bit / BLOCK_SIZE);
-        return;
-    }
     bool reversed = w->s->depth.mapping == REVERSED;
     if (h && !(reversed ? farthest < h->far[k] : farthest > h->far[k]))
         h->tiles_tested++, ask = NULL; /* p is nowhere farther than the block: asked, not skipped */
@@ -200,35 +182,58 @@ static void draw_block(TileWork *w, const Poly *p, const Primitive *plane, float
     (void)plane, (void)ask;
     */
     /* SOLUTION END */
-    const BlockKernels *kernels = p->plain || x0 + BLOCK_SIZE > t->width ? &PLAIN_KERNELS : w->k;
+    const BlockKernels *kernels = p->plain || x0 + BLOCK_SIZE > w->t->width ? &PLAIN_KERNELS : w->k;
     size_t i = (size_t)(y0 - w->oy) * w->stride + (size_t)(x0 - w->ox);
     float far;
     uint64_t passed = kernels->depth_test(w->depth + i, w->face + i, w->stride, x0, y0, mask,
                                           &p->depth, &far);
-    if (t->counting) /* the summary's totals, only when asked for; a hole is never tested */
-        w->stats.tested += popcount(mask & p->depth.keep),
-            w->stats.passed += popcount(passed & p->depth.keep);
+    if (w->t->counting) /* the summary's totals, only when asked for; a hole is never tested */
+        w->stats.tested += (uint64_t)__builtin_popcountll(mask & p->depth.keep),
+            w->stats.passed += (uint64_t)__builtin_popcountll(passed & p->depth.keep);
     if (h && !isnan(far)) /* else, as writes only come nearer, it still bounds them */
         h->far[k] = far;
 }
 
-/* p's blocks in the tile, row by row, each only where p's box is; or,
- * when p's part of the tile fits in 16 x 16 pixels, up to 4 windows there.
+/* The pixels of a block from column left to right - 1, row top to bottom - 1. */
+static uint64_t box_mask(int left, int right, int top, int bottom)
+{
+    uint64_t row = ((uint64_t)1 << right) - ((uint64_t)1 << left);
+    return row * 0x0101010101010101ull & ~(uint64_t)0 << (BLOCK_SIZE * top) &
+           ~(uint64_t)0 >> (BLOCK_SIZE * (BLOCK_SIZE - bottom));
+}
+
+/* When p's part of the tile (x0 .. x1 - 1, y0 .. y1 - 1) fits in 16 x 16
+ * pixels: its up to 4 pieces of 8 x 8, each drawn as a block is, in the 8 x 8
+ * window at its first pixel, moved left to stay in the tile (no other thread's
+ * pixel). False: p is larger, or a cutout, kept by its place in a block. */
+static bool draw_windows(TileWork *w, const Poly *p, const EdgeFn *e, const Primitive *plane,
+                         int x0, int y0, int x1, int y1)
+{
+    if (x1 - x0 > 2 * BLOCK_SIZE || y1 - y0 > 2 * BLOCK_SIZE || w->tx1 - w->tx0 < BLOCK_SIZE ||
+        p->depth.keep != ~(uint64_t)0)
+        return false;
+    for (int y = y0; y < y1; y += BLOCK_SIZE)
+        for (int x = x0; x < x1; x += BLOCK_SIZE) {
+            int left = imin(x, w->tx1 - BLOCK_SIZE); /* the window's first column */
+            uint64_t box = box_mask(x - left, imin(x + BLOCK_SIZE, x1) - left, 0,
+                                    imin(y + BLOCK_SIZE, y1) - y);
+            uint64_t mask = block_coverage(w, e, p->n, left, y, box);
+            if (mask)
+                draw_block(w, p, plane, 0, left, y, mask, true);
+        }
+    return true;
+}
+
+/* p's blocks in the tile, row by row, only where its box is (or its windows).
  * An edge that p's part of the tile lies wholly inside is left out: where p
- * covers the tile whole, its blocks need no edge at all. */
+ * covers the tile whole, its blocks test no edge at all. */
 static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
 {
-    Window win[4];
-    Primitive plane = plane_of(w, &p->depth);
-    int windows = windows_of(w, p, win); /* extras/engine.c */
-    uint64_t mask;
-    for (int k = 0; k < windows; k++) /* small: its pixels in 8 x 8 windows */
-        if ((mask = block_coverage(w, e, p->n, win[k].x, win[k].y, win[k].box)))
-            draw_block(w, p, &plane, 0, win[k].x, win[k].y, mask, true);
-    if (windows > 0)
-        return;
     int x0 = imax(p->x0, w->tx0), x1 = imin(p->x1, w->tx1);
     int y0 = imax(p->y0, w->ty0), y1 = imin(p->y1, w->ty1);
+    Primitive plane = plane_of(w, &p->depth);
+    if (draw_windows(w, p, e, &plane, x0, y0, x1, y1)) /* small: 8 x 8 windows */
+        return;
     float farthest = w->hiz ? hiz_bound(&plane, x0, y0, x1 - 1, y1 - 1, false) : 0;
     EdgeFn crossing[POLYGON_MAX_CORNERS];
     uint32_t n = 0;
@@ -244,83 +249,30 @@ static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
         for (int bx = x0 & ~LAST; bx < x1; bx += BLOCK_SIZE) {
             uint64_t box = box_mask(imax(p->x0 - bx, 0), imin(p->x1 - bx, BLOCK_SIZE),
                                     imax(p->y0 - by, 0), imin(p->y1 - by, BLOCK_SIZE));
-            if ((mask = n > 0 ? block_coverage(w, crossing, n, bx, by, box) : box))
+            uint64_t mask = n > 0 ? block_coverage(w, crossing, n, bx, by, box) : box;
+            if (mask)
                 draw_block(w, p, &plane, farthest, bx, by, mask, false);
         }
 }
 
 /* ---- Tiles and threads ------------------------------------------------- */
 
-/* The pixels of the tile that its polygons' boxes hold, in all. */
-static long tile_work(const Bins *b, int tile)
-{
-    long work = 0;
-    for (; b; b = b->next)
-        work += b->bin[tile].work;
-    return work;
-}
-
-/* Where the tile is drawn. Much work (its boxes hold OWN_WORK pixels or
- * more): in memory of its own (TileWork.tile_depth, rows TILE_SIZE apart),
- * where a 64 x 64 tile's depth and faces fill 32 KB, as a core's first
- * cache holds them; in the target, rows a power of two apart share the
- * cache's few places for their addresses. Little work: in the target.
- * Either way a tile cleared since is cleared there first (a tile of its own
- * memory, read from the target else). */
-static void tile_memory(TileWork *w, Bins *b, int tile)
-{
-    Target *t = w->t;
-    bool own = !w->fr->count && tile_work(b, tile) >= OWN_WORK; /* counting: the target's */
-    bool clear = b->cleared && b->cleared[tile];
-    w->depth = own ? w->tile_depth : t->depth, w->face = own ? w->tile_face : t->face;
-    w->stride = own ? TILE_SIZE : (size_t)t->width;
-    w->ox = own ? w->tx0 : 0, w->oy = own ? w->ty0 : 0;
-    size_t n = (size_t)(w->tx1 - w->tx0);
-    for (int y = w->ty0; (own || clear) && y < w->ty1; y++) {
-        float *depth = w->depth + (size_t)(y - w->oy) * w->stride + (size_t)(w->tx0 - w->ox);
-        int32_t *face = w->face + (size_t)(y - w->oy) * w->stride + (size_t)(w->tx0 - w->ox);
-        size_t from = (size_t)y * (size_t)t->width + (size_t)w->tx0;
-        if (clear)
-            for (size_t i = 0; i < n; i++)
-                depth[i] = b->clear, face[i] = NO_FACE;
-        else
-            memcpy(depth, t->depth + from, n * sizeof *depth),
-                memcpy(face, t->face + from, n * sizeof *face);
-    }
-    if (clear)
-        b->cleared[tile] = false;
-}
-
-/* The tile's own memory back into the target's, row by row. */
-static void write_tile(TileWork *w)
-{
-    Target *t = w->t;
-    size_t n = (size_t)(w->tx1 - w->tx0);
-    for (int y = w->ty0; y < w->ty1; y++) {
-        size_t from = (size_t)(y - w->ty0) * TILE_SIZE;
-        size_t to = (size_t)y * (size_t)t->width + (size_t)w->tx0;
-        memcpy(t->depth + to, w->depth + from, n * sizeof *t->depth);
-        memcpy(t->face + to, w->face + from, n * sizeof *t->face);
-    }
-}
-
 /* One tile: its polygons in order, b's first. */
 static void draw_tile(TileWork *w, Bins *b, int tile)
 {
     w->tx0 = tile % b->tiles_x * TILE_SIZE, w->ty0 = tile / b->tiles_x * TILE_SIZE;
     w->tx1 = imin(w->tx0 + TILE_SIZE, w->t->width), w->ty1 = imin(w->ty0 + TILE_SIZE, w->t->height);
-    tile_memory(w, b, tile);
+    tile_memory(w, b, tile); /* extras/memory.c: where it is drawn, cleared first if it waits */
     for (const Bins *c = b; c; c = c->next)
         for (size_t k = 0; k < c->bin[tile].n; k++) {
             const Poly *p = &c->poly[c->bin[tile].at[k]];
-            (w->fr->simd == SIMD_PIXELS ? draw_pixels : draw_in_tile)(w, p, &c->edge[p->first]);
+            (w->fr->simd == SIMD_PIXELS || w->fr->count ? draw_pixels : draw_in_tile)(
+                w, p, &c->edge[p->first]); /* counting: fragment by fragment, in plain C */
         }
-    if (w->depth == w->tile_depth)
-        write_tile(w);
+    write_tile(w); /* extras/memory.c: its own memory, if it had one, back in the target */
 }
 
 typedef struct { Bins *b; const int *tiles; int ntiles; atomic_int next; } Work;
-
 typedef struct { _Alignas(64) Work *work; TileWork tw; } Thread; /* no cache line shared */
 
 /* Takes tiles until none is left: no two threads share a pixel, each tile is
@@ -333,8 +285,7 @@ static void *draw_tiles(void *arg)
     return NULL;
 }
 
-/* Draws every tile's bin; finish: and clears every tile not yet cleared. */
-static bool draw_bins(Target *t, LessonState *s, bool finish, Error *err)
+bool fast_finish(Target *t, LessonState *s, Error *err)
 {
     FastRaster *fr = &s->fast;
     if (fr->set_up_only)
@@ -347,7 +298,7 @@ static bool draw_bins(Target *t, LessonState *s, bool finish, Error *err)
     Thread *th = tiles ? aligned_alloc(64, (size_t)nthreads * sizeof *th) : NULL;
     pthread_t *id = th ? malloc((size_t)nthreads * sizeof *id) : NULL;
     for (int k = 0; id && k < ntiles; k++)
-        if (tile_busy(b, k) || (finish && b->cleared && b->cleared[k]))
+        if (tile_busy(b, k) || (b->cleared && b->cleared[k]))
             tiles[busy++] = k;
     Work work = {.b = b, .tiles = tiles, .ntiles = busy};
     atomic_init(&work.next, 0);
@@ -369,16 +320,6 @@ static bool draw_bins(Target *t, LessonState *s, bool finish, Error *err)
     if (fr->out_of_memory && err)
         error_set(err, "out of memory for the bins and tiles: the picture is not whole");
     return !fr->out_of_memory;
-}
-
-bool fast_finish(Target *t, LessonState *s, Error *err)
-{
-    return draw_bins(t, s, true, err);
-}
-
-void fast_flush(Target *t, LessonState *s)
-{
-    draw_bins(t, s, false, NULL);
 }
 
 const Rasterizer FAST_ZBUFFER = {

@@ -5,23 +5,25 @@
  *   blocks   edge functions at a block's corners take or reject it whole;
  *            a block an edge crosses is tested per pixel (lesson 04's rule)
  *   depth    lessons 06 to 09's: a block lesson 09's tile buffer hides is skipped
- *   memory   a busy tile drawn in 32 KB of its thread's own; each tile cleared
- *            when it is first drawn, or at fast_finish
- *   SIMD     a block row at once: SSE2 4 pixels, AVX2 8
- *   threads  tiles handed out one at a time: no two share a pixel */
+ *   SIMD     a block row at once: AVX2 8 pixels (simd.c), SSE2 4
+ *   threads  tiles handed out one at a time: no two share a pixel
+ * Bit 8 j + i of a block's mask is its pixel (i, j). */
 #ifndef FAST_RASTER_H
 #define FAST_RASTER_H
 
 #include <stdint.h>
 
-#include "depth_buffer.h"
+#include "hierarchical_z.h"
+#include "intmath.h"
+#include "polygon.h"
+#include "scanline.h"
 
 #define TILE_SIZE 64 /* pixels: a tile is 8 x 8 blocks */
 #define BLOCK_SIZE 8 /* pixels: a block row is one AVX2 register of floats */
 
 typedef enum { SIMD_PIXELS, SIMD_NONE, SIMD_SSE2, SIMD_AVX2 } Simd; /* pixels: no blocks */
-typedef struct Bins Bins; /* what waits for fast_finish (extras/engine.h) */
-typedef struct Held Held; /* faces held back for the threads to set up */
+typedef struct Bins Bins; /* what waits for fast_finish */
+typedef struct Held Held; /* faces held back for the threads to set up (extras/held.c) */
 
 typedef struct {
     Simd simd;        /* the widest this machine has, or --simd */
@@ -35,15 +37,89 @@ typedef struct {
 
 /* The lesson's state (state.h): depth, the engine, no tile buffer yet. */
 LessonState fast_raster(DepthSetup depth, Simd simd, int threads, bool count);
-Simd simd_best(void);
-/* Draws every tile's bin and clears every tile not yet cleared: the picture
- * is done. False, with err (when not NULL) set, when memory ran out for a
- * face or a tile since the clear: the picture is not whole. */
+/* Draws every tile's bin and clears every tile not yet cleared: what was
+ * drawn is done (the frame may go on). False, with err (when not NULL) set,
+ * when memory ran out for a face or a tile since the clear: not whole. */
 bool fast_finish(Target *t, LessonState *s, Error *err);
 void fast_raster_free(FastRaster *fr);
 
-/* The clear (each tile's waits for it to be drawn); each face set up as
- * lesson 07 sets it up, its polygons binned; then fast_finish draws them. */
+/* The clear; each face set up as lesson 07 sets it up, its polygons binned;
+ * then fast_finish draws them. */
 extern const Rasterizer FAST_ZBUFFER;
+
+/* ---- What the lesson's files share ------------------------------------- */
+
+typedef struct { int64_t x, y; } Corner;            /* snapped, as lesson 04 */
+typedef struct { int64_t c; int32_t a, b; } EdgeFn; /* a x + b y + c >= 0: inside */
+typedef struct {
+    float a0, gx, gy, offset; /* z_w = a0 + gx x + gy y + offset, in this order */
+    float unorm;              /* 2^bits - 1 for a unorm format, 0 for float32 */
+    bool reversed; int32_t face;
+    uint64_t keep;            /* the pixels a cutout keeps (all: not a cutout) */
+    DepthFormat format;
+} BlockDepth;
+
+typedef struct {
+    BlockDepth depth;
+    int x0, y0, x1, y1;  /* the pixels it may cover, on the screen */
+    uint32_t first, n;   /* its edges in the bins */
+    bool plain;          /* a plane only plain C takes */
+} Poly;
+
+typedef struct { uint32_t *at; size_t n, cap; long work; } Bin; /* polygons, in order; box pixels */
+struct Bins {
+    const Target *target; int tiles_x, tiles_y;
+    Bins *next; /* the bins of faces set up after these (extras/held.c) */
+    Poly *poly; size_t npoly, cap_poly;
+    EdgeFn *edge; size_t nedge, cap_edge;
+    Bin *bin; /* one per tile, row by row */
+    bool *cleared; /* per tile: cleared since, its pixels not (NULL: cleared at once) */
+    float clear;   /* the cleared depth value */
+};
+
+typedef struct { /* simd.c's AVX2; extras/kernels.c's plain C and SSE2: the same bits */
+    /* The pixels of box where each g[k] + a[k] i + b[k] j >= 0 (32 bits). */
+    uint64_t (*coverage)(const int32_t *g, const int32_t *a, const int32_t *b, int n,
+                         uint64_t box);
+    /* Tests mask's pixels of the block at (x0, y0) (its first at depth[0]):
+     * those that passed; *farthest the block's farthest value then, or NaN. */
+    uint64_t (*depth_test)(float *depth, int32_t *face, size_t stride, int x0, int y0,
+                           uint64_t mask, const BlockDepth *d, float *farthest);
+} BlockKernels;
+#define ROW(mask, j) ((int)((mask) >> (8 * (j)) & 0xff)) /* row j's 8 bits */
+
+typedef struct { /* what one thread needs to draw a tile */
+    Target *t; LessonState *s; const FastRaster *fr; const BlockKernels *k;
+    FragmentStats stats;
+    int tx0, ty0, tx1, ty1; /* its pixels on the screen */
+    float *depth; int32_t *face; /* pixel (x, y): [(y - oy) stride + x - ox] */
+    size_t stride; int ox, oy;   /* in memory, the tile's own or the target's (0, 0) */
+    HierarchicalZ *hiz, own; /* &own or NULL (none); own: this thread's counts */
+    _Alignas(64) float tile_depth[TILE_SIZE * TILE_SIZE]; /* a tile's own memory */
+    int32_t tile_face[TILE_SIZE * TILE_SIZE];
+} TileWork;
+
+/* extras/, shown, not taught. kernels.c: plain C (SSE2), every kernel's helpers. */
+extern const BlockKernels PLAIN_KERNELS;
+bool every_row(uint64_t mask); /* a pixel in each: the kernel read the whole block */
+float farthest_of(const float *v, int n, bool reversed); /* of v[0 .. n - 1] */
+/* memory.c: where a tile is drawn; the clear, which waits for each tile. */
+void clear_fast(Target *t, LessonState *s); /* each tile cleared when first drawn */
+void tile_memory(TileWork *w, Bins *b, int tile); /* w->depth, w->face: its own or t's */
+void write_tile(TileWork *w); /* its own memory (if so) back into the target's */
+/* engine.c: the bins' memory, a face's set-up, one fragment in plain C. */
+bool snap_corner(const ScreenVertex *v, Corner *c); /* false: not finite, or too far */
+Bins *bins_of(Target *t, LessonState *s); /* NULL: out of memory */
+bool bins_room(Bins *b, const Poly *p, int n); /* for p, of n corners */
+void bins_empty(Bins *b); /* and the bins chained after it, unchained */
+bool tile_busy(const Bins *b, int tile); /* a polygon in it, in b or after */
+void draw_fast_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx);
+void set_up_held_faces(Target *t, LessonState *s); /* held.c: by the threads, in chained bins */
+BlockDepth block_depth(const Primitive *p, bool *plain); /* plain: not finite */
+Primitive plane_of(const TileWork *w, const BlockDepth *d); /* for hiz_bound: d's plane */
+void tile_work_begin(TileWork *w, Target *t, LessonState *s); /* the tile buffer, kernels */
+void tile_work_end(TileWork *w); /* its counts added to t's */
+void draw_pixels(TileWork *w, const Poly *p, const EdgeFn *e); /* --simd pixels, counting */
+uint64_t long_edge_coverage(const EdgeFn *e, int64_t at); /* at: e at the block's first */
 
 #endif

@@ -1,10 +1,8 @@
-/* main.c: lesson 10, a fast rasterizer (docs/10_fast_raster.md).
- *
- * The outline of the program. What this lesson teaches is in fast_raster.c
- * (it replaces lesson 09's tiles.c): lesson 09's pictures drawn in tiles and
- * blocks, with SIMD and threads, each block asking lesson 09's tile buffer
- * first. What it shows but does not teach (its flags, the SIMD kernels) is
- * in extras/. */
+/* main.c: lesson 10, a fast rasterizer (docs/10_fast_raster.md): the outline.
+ * What it teaches is in fast_raster.c (in place of lesson 09's tiles.c):
+ * lesson 09's pictures in tiles and blocks, each block asking lesson 09's
+ * tile buffer first; with threads, and SIMD (simd.c). What it shows but does
+ * not teach (its flags, plain C and SSE2 kernels, memory) is in extras/. */
 #include "extras/extras.h" /* and lesson 09's hierarchical_z.h */
 #include "fast_raster.h"
 #include "harness/lesson.h"

@@ -6,7 +6,6 @@
 
 #include "depth_bias.h"
 #include "fast_raster.h"
-#include "hierarchical_z.h"
 
 struct LessonState {
     DepthSetup depth;

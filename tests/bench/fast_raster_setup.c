@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include "bench_setup.h"
+#include "engine.h" /* the lesson's extras/: simd_best */
 #include "fast_raster.h"
 #include "state.h"
 #include "workloads.h"

@@ -5,6 +5,7 @@
  * time, with the checks of fuzz_clip.h; then as fast as it goes (blocks,
  * the --simd the bytes pick, 1 to 3 threads): the depth and face buffers
  * are the same to the bit. */
+#include "engine.h" /* the lesson's extras/: simd_best */
 #include "state.h"
 
 #include "fuzz_depth.h"

@@ -6,6 +6,7 @@
 #include <math.h>
 
 #include "fuzz_flags.h"
+#include "engine.h" /* the lesson's extras/: simd_best */
 #include "state.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);

@@ -2,7 +2,6 @@
  * bins' memory; each face set up as lesson 07 sets it up; one fragment at
  * a time in plain C, counted for --overdraw-out and --trace. */
 #include "engine.h"
-#include "held.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -14,20 +13,6 @@
 #define S ((int64_t)SUBPIXEL_ONE)
 #define HALF_PIXEL ((int64_t)SUBPIXEL_HALF)
 #define CUTOUT_KEEPS 0xf0f0f0f00f0f0f0full /* lesson 08's cutout_keeps, in any block */
-
-uint64_t popcount(uint64_t m) /* the bits set, without a CPU instruction for it */
-{
-    m -= (m >> 1) & 0x5555555555555555ull;
-    m = (m & 0x3333333333333333ull) + ((m >> 2) & 0x3333333333333333ull);
-    return ((m + (m >> 4)) & 0x0f0f0f0f0f0f0f0full) * 0x0101010101010101ull >> 56;
-}
-
-int64_t snap(double pixels)
-{
-    double v = pixels * S + 0.5; /* |v| < 2^30 (SCANLINE_MAX_COORD): a cast is exact */
-    int64_t i = (int64_t)v;
-    return (double)i > v ? i - 1 : i;
-}
 
 /* ---- The bins ---------------------------------------------------------- */
 
@@ -205,12 +190,22 @@ void set_up_face(Target *t, LessonState *s, const ScreenFace *f, const DrawConte
     }
 }
 
-/* ---- A corner, one fragment, a block's depth ---------------------------- */
+/* ---- A corner snapped, one fragment, a block's depth ------------------ */
 
-bool corner_in_range(const ScreenVertex *v)
+static int64_t snap(double pixels) /* lesson 04's floor(pixels S + 1/2), without a call */
 {
-    return isfinite(v->x) && isfinite(v->y) && isfinite(v->d) && v->d > 0 &&
-           fabs(v->x) <= SCANLINE_MAX_COORD && fabs(v->y) <= SCANLINE_MAX_COORD;
+    double v = pixels * S + 0.5; /* |v| < 2^30 (SCANLINE_MAX_COORD): a cast is exact */
+    int64_t i = (int64_t)v;
+    return (double)i > v ? i - 1 : i;
+}
+
+bool snap_corner(const ScreenVertex *v, Corner *c)
+{
+    if (!(isfinite(v->x) && isfinite(v->y) && isfinite(v->d) && v->d > 0 &&
+          fabs(v->x) <= SCANLINE_MAX_COORD && fabs(v->y) <= SCANLINE_MAX_COORD))
+        return false;
+    *c = (Corner){snap(v->x), snap(v->y)};
+    return true;
 }
 
 /* The fragment at (x, y): discarded where a cutout has a hole (as lesson
@@ -289,39 +284,9 @@ uint64_t long_edge_coverage(const EdgeFn *e, int64_t at)
     return mask;
 }
 
-/* ---- A small polygon's window ------------------------------------------ */
-
-uint64_t box_mask(int left, int right, int top, int bottom)
-{
-    uint64_t row = ((uint64_t)1 << right) - ((uint64_t)1 << left);
-    return row * 0x0101010101010101ull & ~(uint64_t)0 << (BLOCK_SIZE * top) &
-           ~(uint64_t)0 >> (BLOCK_SIZE * (BLOCK_SIZE - bottom));
-}
-
-/* When p's part of the tile fits in 16 x 16 pixels: that part in up to 4
- * pieces of at most 8 x 8, each in the 8 x 8 window at its first pixel,
- * moved left to stay in the tile (no other thread's pixel). A cutout keeps
- * pixels by their place in a block: it is drawn by blocks. */
-int windows_of(const TileWork *w, const Poly *p, Window win[4])
-{
-    int x0 = p->x0 > w->tx0 ? p->x0 : w->tx0, x1 = p->x1 < w->tx1 ? p->x1 : w->tx1;
-    int y0 = p->y0 > w->ty0 ? p->y0 : w->ty0, y1 = p->y1 < w->ty1 ? p->y1 : w->ty1;
-    if (x1 - x0 > 2 * BLOCK_SIZE || y1 - y0 > 2 * BLOCK_SIZE || w->tx1 - w->tx0 < BLOCK_SIZE ||
-        p->depth.keep != ~(uint64_t)0)
-        return 0;
-    int n = 0;
-    for (int y = y0; y < y1; y += BLOCK_SIZE)
-        for (int x = x0; x < x1; x += BLOCK_SIZE, n++) {
-            int right = x + BLOCK_SIZE < x1 ? x + BLOCK_SIZE : x1;
-            int bottom = y + BLOCK_SIZE < y1 ? y + BLOCK_SIZE : y1;
-            win[n].x = x < w->tx1 - BLOCK_SIZE ? x : w->tx1 - BLOCK_SIZE, win[n].y = y;
-            win[n].box = box_mask(x - win[n].x, right - win[n].x, 0, bottom - y);
-        }
-    return n;
-}
-
-/* --simd pixels, the page's "bins" step: p's part of the tile without
- * blocks, each pixel of its box inside every edge tested in plain C. */
+/* --simd pixels, the page's "bins" step, and counting (--trace,
+ * --overdraw-out): p's part of the tile without blocks, each pixel of its
+ * box inside every edge tested in plain C, one fragment after another. */
 void draw_pixels(TileWork *w, const Poly *p, const EdgeFn *e)
 {
     int x0 = p->x0 > w->tx0 ? p->x0 : w->tx0, x1 = p->x1 < w->tx1 ? p->x1 : w->tx1;
@@ -334,25 +299,4 @@ void draw_pixels(TileWork *w, const Poly *p, const EdgeFn *e)
             if (inside)
                 test_pixel(w, &p->depth, x, y);
         }
-}
-
-/* Nothing waits any more: the picture starts again. Each tile is cleared
- * when it is first drawn, by the thread that draws it, or at fast_finish
- * (fast_raster.c), not now: lesson 09's hiz_clear of one pixel gives every
- * tile of the tile buffer the far plane. Counting clears at once. */
-void clear_fast(Target *t, LessonState *s)
-{
-    FastRaster *fr = &s->fast;
-    bins_empty(fr->bins);
-    fr->out_of_memory = false;
-    Bins *b = fr->count ? NULL : bins_of(t, s);
-    if (!b || !b->cleared) {
-        hiz_clear(t, s);
-        return;
-    }
-    int32_t face;
-    Target pixel = {.width = 1, .height = 1, .depth = &b->clear, .face = &face};
-    hiz_clear(&pixel, s);
-    for (int k = 0; k < b->tiles_x * b->tiles_y; k++)
-        b->cleared[k] = true;
 }

@@ -8,8 +8,10 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "bias_flags.h"
+#include "depth_flags.h"
+#include "engine.h"
 #include "harness/cli.h"
-#include "hierarchical_z.h"
 
 enum { FLAG_SIMD, FLAG_THREADS, FLAG_FORMAT, FLAG_MAPPING, FLAG_OFFSET, FLAG_CLAMP, FLAG_COUNT };
 
@@ -39,7 +41,7 @@ static const LessonFlag FLAGS[FLAG_COUNT] = {
 
 static const char *const SIMD_NAMES[] = {[SIMD_PIXELS] = "pixels", [SIMD_NONE] = "none",
                                          [SIMD_SSE2] = "sse2", [SIMD_AVX2] = "avx2"};
-const char *simd_name(Simd simd)
+static const char *simd_name(Simd simd)
 {
     return SIMD_NAMES[simd];
 }

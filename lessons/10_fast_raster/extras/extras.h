@@ -4,18 +4,12 @@
 #ifndef EXTRAS_H
 #define EXTRAS_H
 
-#include "bias_flags.h"
-#include "depth_flags.h"
-#include "fast_raster.h"
-#include "hierarchical_z.h"
 #include "harness/lesson.h"
 #include "state.h"
 
 extern const Extras EXTRAS;
-
 /* The run's engine: SIMD, threads, counting, and its depth buffer. */
 LessonState fast_chosen(const Run *run);
-const char *simd_name(Simd simd);
 void print_engine(const Target *t, const LessonState *s); /* how the picture was drawn */
 
 #endif

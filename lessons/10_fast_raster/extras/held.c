@@ -6,7 +6,7 @@
  * (lesson 07's code keeps the plane of the triangle being drawn in it) into
  * bins of its own; the tiles then take the bins one run after the other,
  * so every polygon is drawn in the order the faces came. */
-#include "held.h"
+#include "engine.h"
 
 #include <pthread.h>
 #include <stdlib.h>
@@ -37,7 +37,7 @@ bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext
         return false;
     Held *h = fr->held;
     if (h->nface >= HOLD_MAX)
-        fast_flush(t, s);
+        fast_finish(t, s, NULL);
     void *face = h->face, *v = h->v, *clip = h->clip, *tri = h->tri;
     size_t n = (size_t)f->n;
     bool ok = grow_array(&face, &h->cap_face, h->nface + 1, sizeof *h->face) &&
@@ -46,7 +46,7 @@ bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext
               grow_array(&tri, &h->cap_tri, h->ntri + n - 2, sizeof *h->tri);
     h->face = face, h->v = v, h->clip = clip, h->tri = tri;
     if (!ok) {
-        fast_flush(t, s); /* what was held, first: then this face is set up now */
+        fast_finish(t, s, NULL); /* what was held, first: then this face is set up now */
         return false;
     }
     memcpy(h->v + h->nv, f->v, n * sizeof *f->v);
