@@ -96,6 +96,7 @@ static void set_up_polygon(const Primitive *q, const Corner *c, int n, int turn)
               .y1 = imax(0, imin(t->height, (int)floor_div(hi.y - HALF_PIXEL, S) + 1))};
     if (p.x0 >= p.x1 || p.y0 >= p.y1)
         return; /* no pixel centre on the screen */
+    p.small = hi.x - lo.x <= 2 * BLOCK_SIZE * S && hi.y - lo.y <= 2 * BLOCK_SIZE * S;
     p.depth = block_depth(q, &p.plain);
     Bins *b = bins_of(t, q->state);
     bool room = b && b->npoly < FLUSH_POLYGONS && bins_room(b, &p, n);
@@ -107,9 +108,8 @@ static void set_up_polygon(const Primitive *q, const Corner *c, int n, int turn)
         q->state->fast.out_of_memory = true;
 }
 
-/* A convex polygon as lesson 04 takes it (false: draw its triangles), but no
- * 1/d is stepped, and none is discarded beyond the far plane: lesson 05's
- * clipper keeps every corner inside it. */
+/* A convex polygon as lesson 04 takes it (false: draw its triangles); no 1/d is
+ * stepped, none discarded past far (lesson 05's clipper keeps corners inside). */
 bool draw_polygon(const Primitive *p, const ScreenVertex *v, int n, double far)
 {
     (void)far;
@@ -160,10 +160,9 @@ static uint64_t block_coverage(const TileWork *w, const EdgeFn *e, uint32_t n, i
     return crossing > 0 && box ? w->k->coverage(g, a, b, crossing, box) : box;
 }
 
-/* The block's (or window's) pixels in mask: skipped when lesson 09's tile
- * buffer says none can pass (a window is not asked), else tested by the
- * kernel (plain C where the screen cuts a row short). farthest: the plane's
- * farthest value over p's part of the tile. */
+/* The block's (or window's, not asked) pixels in mask: skipped when lesson 09's
+ * tile buffer says none can pass, else tested by the kernel (plain C where the
+ * screen cuts a row short). farthest: p's farthest over its part of the tile. */
 static void draw_block(TileWork *w, const Poly *p, const Primitive *plane, float farthest,
                        int x0, int y0, uint64_t mask, bool window)
 {
@@ -205,10 +204,12 @@ static uint64_t box_mask(int left, int right, int top, int bottom)
 /* When p's part of the tile (x0 .. x1 - 1, y0 .. y1 - 1) fits in 16 x 16
  * pixels: its up to 4 pieces of 8 x 8, each drawn as a block is, in the 8 x 8
  * window at its first pixel, moved left to stay in the tile (no other thread's
- * pixel). False: p is larger, or a cutout, kept by its place in a block. */
-static bool draw_windows(TileWork *w, const Poly *p, const EdgeFn *e, const Primitive *plane,
-                         int x0, int y0, int x1, int y1)
+ * pixel). False: p is larger, or a cutout, kept by its place in a block. A small
+ * p is near its windows: no edge's values there leave 32 bits, none sorted out. */
+static bool draw_windows(TileWork *w, const Poly *p, const EdgeFn *e, int x0, int y0, int x1,
+                         int y1)
 {
+    int32_t g[POLYGON_MAX_CORNERS], a[POLYGON_MAX_CORNERS], b[POLYGON_MAX_CORNERS];
     if (x1 - x0 > 2 * BLOCK_SIZE || y1 - y0 > 2 * BLOCK_SIZE || w->tx1 - w->tx0 < BLOCK_SIZE ||
         p->depth.keep != ~(uint64_t)0)
         return false;
@@ -217,9 +218,12 @@ static bool draw_windows(TileWork *w, const Poly *p, const EdgeFn *e, const Prim
             int left = imin(x, w->tx1 - BLOCK_SIZE); /* the window's first column */
             uint64_t box = box_mask(x - left, imin(x + BLOCK_SIZE, x1) - left, 0,
                                     imin(y + BLOCK_SIZE, y1) - y);
-            uint64_t mask = block_coverage(w, e, p->n, left, y, box);
+            for (uint32_t k = 0; p->small && k < p->n; k++)
+                g[k] = (int32_t)edge_at(&e[k], left, y), a[k] = e[k].a, b[k] = e[k].b;
+            uint64_t mask = p->small ? w->k->coverage(g, a, b, (int)p->n, box)
+                                     : block_coverage(w, e, p->n, left, y, box);
             if (mask)
-                draw_block(w, p, plane, 0, left, y, mask, true);
+                draw_block(w, p, NULL, 0, left, y, mask, true); /* not asked: no plane */
         }
     return true;
 }
@@ -231,9 +235,9 @@ static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
 {
     int x0 = imax(p->x0, w->tx0), x1 = imin(p->x1, w->tx1);
     int y0 = imax(p->y0, w->ty0), y1 = imin(p->y1, w->ty1);
-    Primitive plane = plane_of(w, &p->depth);
-    if (draw_windows(w, p, e, &plane, x0, y0, x1, y1)) /* small: 8 x 8 windows */
+    if (draw_windows(w, p, e, x0, y0, x1, y1)) /* small: 8 x 8 windows */
         return;
+    Primitive plane = plane_of(w, &p->depth);
     float farthest = w->hiz ? hiz_bound(&plane, x0, y0, x1 - 1, y1 - 1, false) : 0;
     EdgeFn crossing[POLYGON_MAX_CORNERS];
     uint32_t n = 0;

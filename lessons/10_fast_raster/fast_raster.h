@@ -63,7 +63,7 @@ typedef struct {
     BlockDepth depth;
     int x0, y0, x1, y1;  /* the pixels it may cover, on the screen */
     uint32_t first, n;   /* its edges in the bins */
-    bool plain;          /* a plane only plain C takes */
+    bool plain, small;   /* a plane only plain C takes; corners 16 pixels apart at most */
 } Poly;
 
 typedef struct { uint32_t *at; size_t n, cap; long work; } Bin; /* polygons, in order; box pixels */
@@ -99,16 +99,13 @@ typedef struct { /* what one thread needs to draw a tile */
     int32_t tile_face[TILE_SIZE * TILE_SIZE];
 } TileWork;
 
-/* extras/, shown, not taught. kernels.c: plain C (SSE2), every kernel's helpers. */
-extern const BlockKernels PLAIN_KERNELS;
+extern const BlockKernels PLAIN_KERNELS; /* extras/ (shown, not taught): kernels.c */
 bool every_row(uint64_t mask); /* a pixel in each: the kernel read the whole block */
 float farthest_of(const float *v, int n, bool reversed); /* of v[0 .. n - 1] */
-/* memory.c: where a tile is drawn; the clear, which waits for each tile. */
-void clear_fast(Target *t, LessonState *s); /* each tile cleared when first drawn */
+void clear_fast(Target *t, LessonState *s); /* memory.c: each tile cleared when first drawn */
 void tile_memory(TileWork *w, Bins *b, int tile); /* w->depth, w->face: its own or t's */
 void write_tile(TileWork *w); /* its own memory (if so) back into the target's */
-/* engine.c: the bins' memory, a face's set-up, one fragment in plain C. */
-bool snap_corner(const ScreenVertex *v, Corner *c); /* false: not finite, or too far */
+bool snap_corner(const ScreenVertex *v, Corner *c); /* engine.c; false: not finite, too far */
 Bins *bins_of(Target *t, LessonState *s); /* NULL: out of memory */
 bool bins_room(Bins *b, const Poly *p, int n); /* for p, of n corners */
 void bins_empty(Bins *b); /* and the bins chained after it, unchained */
