@@ -132,13 +132,15 @@ bool draw_polygon(const Primitive *p, const ScreenVertex *v, int n, double far)
 
 /* ---- Blocks: coverage, hierarchical Z, the depth test ------------------ */
 
-/* The pixels of box in the block at (x0, y0) inside every edge: a block
- * wholly outside one has none; the edges that cross it, per pixel. */
-static uint64_t block_coverage(const TileWork *w, const EdgeFn *e, uint32_t n, int x0, int y0,
-                               uint64_t box)
+typedef struct { int32_t g[POLYGON_MAX_CORNERS], a[POLYGON_MAX_CORNERS],
+                 b[POLYGON_MAX_CORNERS]; int n; } Crossing; /* g + a i + b j >= 0: inside */
+
+/* The pixels of box in the block at (x0, y0) not outside an edge: none for a
+ * block wholly outside one; the edges that cross it, into c for the kernel. */
+static uint64_t block_coverage(const EdgeFn *e, uint32_t n, int x0, int y0, uint64_t box,
+                               Crossing *c)
 {
-    int32_t g[POLYGON_MAX_CORNERS], a[POLYGON_MAX_CORNERS], b[POLYGON_MAX_CORNERS];
-    int crossing = 0;
+    c->n = 0;
     for (uint32_t k = 0; k < n; k++) {
         int64_t at = edge_at(&e[k], x0, y0), hi = edge_max(&e[k], x0, y0, LAST, LAST);
         /* SOLUTION BEGIN: the block against edge k, from its corners. */
@@ -153,18 +155,18 @@ static uint64_t block_coverage(const TileWork *w, const EdgeFn *e, uint32_t n, i
         */
         /* SOLUTION END */
         if (abs(e[k].a) + abs(e[k].b) < SHORT_EDGE)
-            g[crossing] = (int32_t)at, a[crossing] = e[k].a, b[crossing++] = e[k].b;
+            c->g[c->n] = (int32_t)at, c->a[c->n] = e[k].a, c->b[c->n++] = e[k].b;
         else
             box &= long_edge_coverage(&e[k], at); /* in 64 bits */
     }
-    return crossing > 0 && box ? w->k->coverage(g, a, b, crossing, box) : box;
+    return box;
 }
 
-/* The block's (or window's, not asked) pixels in mask: skipped when lesson 09's
- * tile buffer says none can pass, else tested by the kernel (plain C where the
- * screen cuts a row short). farthest: p's farthest over its part of the tile. */
+/* The block's (or window's, not asked) pixels of box: skipped when lesson 09's
+ * tile buffer says none can pass, else those inside c tested by the kernels
+ * (plain C where the screen cuts a row short). farthest: p's over the tile. */
 static void draw_block(TileWork *w, const Poly *p, const Primitive *plane, float farthest,
-                       int x0, int y0, uint64_t mask, bool window)
+                       int x0, int y0, uint64_t box, const Crossing *c, bool window)
 {
     HierarchicalZ *h = window ? NULL : w->hiz, *ask = h;
     int k = h ? y0 / BLOCK_SIZE * h->tiles_x + x0 / BLOCK_SIZE : 0;
@@ -183,9 +185,10 @@ static void draw_block(TileWork *w, const Poly *p, const Primitive *plane, float
     /* SOLUTION END */
     const BlockKernels *kernels = p->plain || x0 + BLOCK_SIZE > w->t->width ? &PLAIN_KERNELS : w->k;
     size_t i = (size_t)(y0 - w->oy) * w->stride + (size_t)(x0 - w->ox);
-    float far;
-    uint64_t passed = kernels->depth_test(w->depth + i, w->face + i, w->stride, x0, y0, mask,
-                                          &p->depth, &far);
+    uint64_t mask = c->n > 0 ? kernels->coverage(c->g, c->a, c->b, c->n, box) : box;
+    float far = NAN; /* no pixel inside every edge: none tested */
+    uint64_t passed = mask ? kernels->depth_test(w->depth + i, w->face + i, w->stride, x0, y0,
+                                                 mask, &p->depth, &far) : 0;
     if (w->t->counting) /* the summary's totals, only when asked for; a hole is never tested */
         w->stats.tested += (uint64_t)__builtin_popcountll(mask & p->depth.keep),
             w->stats.passed += (uint64_t)__builtin_popcountll(passed & p->depth.keep);
@@ -209,7 +212,7 @@ static uint64_t box_mask(int left, int right, int top, int bottom)
 static bool draw_windows(TileWork *w, const Poly *p, const EdgeFn *e, int x0, int y0, int x1,
                          int y1)
 {
-    int32_t g[POLYGON_MAX_CORNERS], a[POLYGON_MAX_CORNERS], b[POLYGON_MAX_CORNERS];
+    Crossing c;
     if (x1 - x0 > 2 * BLOCK_SIZE || y1 - y0 > 2 * BLOCK_SIZE || w->tx1 - w->tx0 < BLOCK_SIZE ||
         p->depth.keep != ~(uint64_t)0)
         return false;
@@ -218,12 +221,10 @@ static bool draw_windows(TileWork *w, const Poly *p, const EdgeFn *e, int x0, in
             int left = imin(x, w->tx1 - BLOCK_SIZE); /* the window's first column */
             uint64_t box = box_mask(x - left, imin(x + BLOCK_SIZE, x1) - left, 0,
                                     imin(y + BLOCK_SIZE, y1) - y);
-            for (uint32_t k = 0; p->small && k < p->n; k++)
-                g[k] = (int32_t)edge_at(&e[k], left, y), a[k] = e[k].a, b[k] = e[k].b;
-            uint64_t mask = p->small ? w->k->coverage(g, a, b, (int)p->n, box)
-                                     : block_coverage(w, e, p->n, left, y, box);
-            if (mask)
-                draw_block(w, p, NULL, 0, left, y, mask, true); /* not asked: no plane */
+            for (c.n = 0; p->small && c.n < (int)p->n; c.n++) /* every edge, none sorted out */
+                c.a[c.n] = e[c.n].a, c.b[c.n] = e[c.n].b, c.g[c.n] = (int32_t)edge_at(e + c.n, left, y);
+            if (p->small || (box = block_coverage(e, p->n, left, y, box, &c)))
+                draw_block(w, p, NULL, 0, left, y, box, &c, true); /* not asked: no plane */
         }
     return true;
 }
@@ -240,6 +241,7 @@ static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
     Primitive plane = plane_of(w, &p->depth);
     float farthest = w->hiz ? hiz_bound(&plane, x0, y0, x1 - 1, y1 - 1, false) : 0;
     EdgeFn crossing[POLYGON_MAX_CORNERS];
+    Crossing c; /* the edges crossing a block, for the kernel */
     uint32_t n = 0;
     for (uint32_t k = 0; k < p->n; k++) {
         int64_t hi = edge_max(&e[k], x0, y0, x1 - 1 - x0, y1 - 1 - y0);
@@ -253,9 +255,8 @@ static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
         for (int bx = x0 & ~LAST; bx < x1; bx += BLOCK_SIZE) {
             uint64_t box = box_mask(imax(p->x0 - bx, 0), imin(p->x1 - bx, BLOCK_SIZE),
                                     imax(p->y0 - by, 0), imin(p->y1 - by, BLOCK_SIZE));
-            uint64_t mask = n > 0 ? block_coverage(w, crossing, n, bx, by, box) : box;
-            if (mask)
-                draw_block(w, p, &plane, farthest, bx, by, mask, false);
+            if ((box = block_coverage(crossing, n, bx, by, box, &c)))
+                draw_block(w, p, &plane, farthest, bx, by, box, &c, false);
         }
 }
 

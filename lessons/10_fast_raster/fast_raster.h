@@ -43,9 +43,7 @@ LessonState fast_raster(DepthSetup depth, Simd simd, int threads, bool count);
 bool fast_finish(Target *t, LessonState *s, Error *err);
 void fast_raster_free(FastRaster *fr);
 
-/* The clear; each face set up as lesson 07 sets it up, its polygons binned;
- * then fast_finish draws them. */
-extern const Rasterizer FAST_ZBUFFER;
+extern const Rasterizer FAST_ZBUFFER; /* the clear; faces set up and binned; then fast_finish */
 
 /* ---- What the lesson's files share ------------------------------------- */
 
