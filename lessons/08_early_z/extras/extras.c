@@ -14,17 +14,7 @@
 enum { FLAG_Z_MODE, FLAG_SORT, FLAG_BUG, FLAG_COLOUR_OUT, FLAG_HEAT_OUT, FLAG_COUNT };
 
 static const LessonFlag FLAGS[FLAG_COUNT] = {
-    [FLAG_Z_MODE] = {"--z-mode", "M", "late (shade, then test), early (the default: test, then "
-                                      "shade what passed) or prepass (depth first, then shade "
-                                      "where equal)"},
-    [FLAG_SORT] = {"--sort", "S", "none (mesh order, the default), front-to-back or "
-                                  "back-to-front, by the view depth of each face's centre"},
-    [FLAG_BUG] = {"--bug", "NAME", "make a classic mistake: early-z-with-discard"},
-    [FLAG_COLOUR_OUT] = {"--colour-out", "FILE.png", "the picture the fragment shader wrote",
-                         .output = true},
-    [FLAG_HEAT_OUT] = {"--shade-count-out", "FILE.png",
-                       "heat map of how many times each pixel was shaded, with a legend",
-                       .output = true},
+    EARLY_Z_FLAGS,
 };
 
 LessonState early_z_chosen(const Run *run)
