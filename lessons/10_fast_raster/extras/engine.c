@@ -211,7 +211,7 @@ bool snap_corner(const ScreenVertex *v, Corner *c)
 /* The fragment at (x, y): discarded where a cutout has a hole (as lesson
  * 08's late-Z: never tested), else z_w in lesson 06's order, its test and
  * its write; counted by target_record when counting. */
-bool test_pixel(TileWork *w, const BlockDepth *d, int x, int y)
+static bool test_pixel(TileWork *w, const BlockDepth *d, int x, int y)
 {
     Target *t = w->t;
     size_t i = (size_t)(y - w->oy) * w->stride + (size_t)(x - w->ox);

@@ -12,8 +12,6 @@ void held_free(FastRaster *fr);
 void bins_free(Bins *b);
 /* Room for need items of size bytes in *items, of *cap; false (nothing changed) without. */
 bool grow_array(void **items, size_t *cap, size_t need, size_t size);
-/* The fragment at (x, y) in plain C, counted by target_record when counting. */
-bool test_pixel(TileWork *w, const BlockDepth *d, int x, int y);
 
 extern const BlockKernels SSE2_KERNELS, AVX2_KERNELS; /* AVX2: simd.c */
 Simd simd_best(void);                      /* the widest this machine has */
