@@ -18,7 +18,7 @@ typedef struct {
     const Tri *tris;       /* its n - 2 triangles, as corner numbers into v */
     bool convex;           /* a convex polygon: may be drawn whole (lesson 04) */
     const Vec4 *clip;      /* the corners in clip space (lesson 05), or NULL if made on screen */
-} ScreenFace;
+} ScreenFace; /* with clip, v[k] is camera_divide(clip[k]), to the bit (lesson 10 relies on it) */
 
 /* What draw_face needs besides the target and the face. */
 typedef struct {

@@ -277,6 +277,41 @@ static void faces_reach_the_rasterizer_in_the_given_order(void **state)
     render_free(&r);
 }
 
+/* The contract of ScreenFace (rasterizer.h), on which lesson 10's set-up
+ * rests: each corner on the screen is its clip-space corner divided by
+ * camera_divide, to the bit. A stand-in that clips sees every corner. */
+static int corners_checked, corners_differ;
+
+static void check_corners(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx)
+{
+    (void)s, (void)ctx;
+    for (int k = 0; f->clip && k < f->n; k++) {
+        ScreenVertex divided = camera_divide(f->clip[k], t->width, t->height);
+        corners_checked++;
+        corners_differ += memcmp(&divided, &f->v[k], sizeof divided) != 0;
+    }
+}
+
+static const Rasterizer CORNER_CHECKER = {.clear = clear_to_zero, .draw_face = check_corners,
+                                          .stored_to_depth = inverse, .clips = true};
+
+static void screen_corners_are_their_clip_corners_divided(void **state)
+{
+    (void)state;
+    Render r;
+    Target t;
+    Error err;
+    three_face_render(&r);
+    assert_true(render_target_init(&t, &CORNER_CHECKER, 8, 8, &err));
+    corners_checked = corners_differ = 0;
+    const int order[3] = {0, 1, 2};
+    assert_true(render_faces(&r, &t, &CORNER_CHECKER, order, 3, NULL, NULL, &err));
+    expect_count(9, corners_checked, "corners handed over with their clip-space corner");
+    expect_count(0, corners_differ, "corners that are not their clip-space corner divided");
+    target_free(&t);
+    render_free(&r);
+}
+
 /* Face 0's first corner (0, 0, -5) projects to the centre (4, 4) of an 8 x 8
  * screen; the stand-in stores 1/5 there, and the view depth reads back 5. */
 static void view_depth_converts_and_marks_the_background(void **state)
@@ -405,6 +440,7 @@ int main(void)
         cmocka_unit_test(flat_colour_is_kd_times_lambert),
         cmocka_unit_test(faces_without_material_get_distinct_palette_colours),
         cmocka_unit_test(faces_reach_the_rasterizer_in_the_given_order),
+        cmocka_unit_test(screen_corners_are_their_clip_corners_divided),
         cmocka_unit_test(view_depth_converts_and_marks_the_background),
         cmocka_unit_test(summary_has_the_documented_format),
         cmocka_unit_test(outputs_are_written_into_new_directories),

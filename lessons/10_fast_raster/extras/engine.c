@@ -131,27 +131,24 @@ void fast_raster_free(FastRaster *fr)
 
 /* Triangle tri of f when no plane cuts it, it lies inside the guard band
  * and it is no decal: what lesson 07 does with it, without its copies. Its
- * plane from its corners as clip_to_screen puts them (triangle_plane), its
- * coverage from the face's own (draw_clipped_face). False: not so simple. */
+ * plane from its corners as clip_to_screen puts them (triangle_plane): f's
+ * own, which are its clip corners divided (rasterizer.h), as its coverage
+ * is (draw_clipped_face). False: not so simple. */
 static bool draw_simple_triangle(Target *t, LessonState *s, const ScreenFace *f, const Tri *tri,
                                  double far)
 {
-    ScreenVertex v[3], on[3];
+    ScreenVertex v[3];
     for (int j = 0; j < 3; j++) {
-        v[j] = f->v[tri->c[j]], on[j] = v[j];
+        v[j] = f->v[tri->c[j]];
         if (!(isfinite(v[j].x) && isfinite(v[j].y) && isfinite(v[j].d) && v[j].d > 0))
             return false;
-        if (!f->clip)
-            continue;
-        Vec4 c = f->clip[tri->c[j]];
-        if (!(plane_distance(c, NEAR_PLANE) >= 0 && plane_distance(c, FAR_PLANE) >= 0))
+        const Vec4 *c = f->clip ? &f->clip[tri->c[j]] : NULL;
+        if (c && !(plane_distance(*c, NEAR_PLANE) >= 0 && plane_distance(*c, FAR_PLANE) >= 0))
             return false;
-        on[j] = clip_to_screen(c, t->width, t->height);
     }
-    if (!guard_band_contains(on, 3, t->width, t->height) ||
-        !guard_band_contains(v, 3, t->width, t->height))
+    if (!guard_band_contains(v, 3, t->width, t->height))
         return false;
-    Primitive p = {.target = t, .state = s, .face = f->face, .plane = depth_plane(&s->depth, on)};
+    Primitive p = {.target = t, .state = s, .face = f->face, .plane = depth_plane(&s->depth, v)};
     draw_polygon(&p, v, 3, far); /* refused: lesson 07 draws nothing either */
     return true;
 }
