@@ -132,16 +132,13 @@ bool draw_polygon(const Primitive *p, const ScreenVertex *v, int n, double far)
 
 /* ---- Blocks: coverage, hierarchical Z, the depth test ------------------ */
 
-typedef struct { int32_t g[POLYGON_MAX_CORNERS], a[POLYGON_MAX_CORNERS],
-                 b[POLYGON_MAX_CORNERS]; int n; } Crossing; /* g + a i + b j >= 0: inside */
-
 /* The pixels of box in the block at (x0, y0) not outside an edge: none for a
- * block wholly outside one; the edges that cross it, into c for the kernel. */
-static uint64_t block_coverage(const EdgeFn *e, uint32_t n, int x0, int y0, uint64_t box,
-                               Crossing *c)
+ * block wholly outside one; the *m edges that cross it, into crossed. */
+static uint64_t block_coverage(const EdgeFn *e, int n, int x0, int y0, uint64_t box,
+                               EdgeFn *crossed, int *m)
 {
-    c->n = 0;
-    for (uint32_t k = 0; k < n; k++) {
+    *m = 0;
+    for (int k = 0; k < n; k++) {
         int64_t at = edge_at(&e[k], x0, y0), hi = edge_max(&e[k], x0, y0, LAST, LAST);
         /* SOLUTION BEGIN: the block against edge k, from its corners. */
         int64_t lo = at + LAST * (int64_t)(e[k].a < 0 ? e[k].a : 0) +
@@ -155,20 +152,27 @@ static uint64_t block_coverage(const EdgeFn *e, uint32_t n, int x0, int y0, uint
         */
         /* SOLUTION END */
         if (abs(e[k].a) + abs(e[k].b) < SHORT_EDGE)
-            c->g[c->n] = (int32_t)at, c->a[c->n] = e[k].a, c->b[c->n++] = e[k].b;
+            crossed[(*m)++] = e[k];
         else
             box &= long_edge_coverage(&e[k], at); /* in 64 bits */
     }
     return box;
 }
 
-/* The block's (or window's, not asked) pixels of box: skipped when lesson 09's
- * tile buffer says none can pass, else those inside c tested by the kernels
- * (plain C where the screen cuts a row short). farthest: p's over the tile. */
-static void draw_block(TileWork *w, const Poly *p, const Primitive *plane, float farthest,
-                       int x0, int y0, uint64_t box, const Crossing *c, bool window)
+static void count(TileWork *w, uint64_t tested, uint64_t passed) /* the summary's, if asked */
 {
-    HierarchicalZ *h = window ? NULL : w->hiz, *ask = h;
+    if (w->t->counting)
+        w->stats.tested += (uint64_t)__builtin_popcountll(tested),
+            w->stats.passed += (uint64_t)__builtin_popcountll(passed);
+}
+
+/* The block's pixels of box: skipped when lesson 09's tile buffer says none
+ * can pass, else those inside the m edges crossed tested by the kernel (plain
+ * C where the screen cuts a row short). farthest: p's over the tile. */
+static void draw_block(TileWork *w, const Poly *p, const Primitive *plane, float farthest,
+                       int x0, int y0, uint64_t box, const EdgeFn *crossed, int m)
+{
+    HierarchicalZ *h = w->hiz, *ask = h;
     int k = h ? y0 / BLOCK_SIZE * h->tiles_x + x0 / BLOCK_SIZE : 0;
     bool reversed = w->s->depth.mapping == REVERSED;
     if (h && !(reversed ? farthest < h->far[k] : farthest > h->far[k]))
@@ -185,13 +189,10 @@ static void draw_block(TileWork *w, const Poly *p, const Primitive *plane, float
     /* SOLUTION END */
     const BlockKernels *kernels = p->plain || x0 + BLOCK_SIZE > w->t->width ? &PLAIN_KERNELS : w->k;
     size_t i = (size_t)(y0 - w->oy) * w->stride + (size_t)(x0 - w->ox);
-    uint64_t mask = c->n > 0 ? kernels->coverage(c->g, c->a, c->b, c->n, box) : box;
-    float far = NAN; /* no pixel inside every edge: none tested */
-    uint64_t passed = mask ? kernels->depth_test(w->depth + i, w->face + i, w->stride, x0, y0,
-                                                 mask, &p->depth, &far) : 0;
-    if (w->t->counting) /* the summary's totals, only when asked for; a hole is never tested */
-        w->stats.tested += (uint64_t)__builtin_popcountll(mask & p->depth.keep),
-            w->stats.passed += (uint64_t)__builtin_popcountll(passed & p->depth.keep);
+    float far;
+    uint64_t mask, passed = kernels->draw(w->depth + i, w->face + i, w->stride, x0, y0, box,
+                                          crossed, m, &p->depth, &mask, &far);
+    count(w, mask & p->depth.keep, passed & p->depth.keep); /* a hole is never tested */
     if (h && !isnan(far)) /* else, as writes only come nearer, it still bounds them */
         h->far[k] = far;
 }
@@ -204,27 +205,29 @@ static uint64_t box_mask(int left, int right, int top, int bottom)
            ~(uint64_t)0 >> (BLOCK_SIZE * (BLOCK_SIZE - bottom));
 }
 
-/* When p's part of the tile (x0 .. x1 - 1, y0 .. y1 - 1) fits in 16 x 16
- * pixels: its up to 4 pieces of 8 x 8, each drawn as a block is, in the 8 x 8
- * window at its first pixel, moved left to stay in the tile (no other thread's
- * pixel). False: p is larger, or a cutout, kept by its place in a block. A small
- * p is near its windows: no edge's values there leave 32 bits, none sorted out. */
+/* When p is small (corners 16 pixels apart at most) and its part of the
+ * tile (x0 .. x1 - 1, y0 .. y1 - 1) fits in 16 x 16 pixels: its up to 4
+ * pieces of 8 x 8, each in the 8 x 8 window at its first pixel, moved left to
+ * stay in the tile (no other thread's pixel), drawn by the kernel. p
+ * is near its windows: no edge's values there leave 32 bits, none sorted out.
+ * False: p is larger, or a cutout, kept by its place in a block. */
 static bool draw_windows(TileWork *w, const Poly *p, const EdgeFn *e, int x0, int y0, int x1,
                          int y1)
 {
-    Crossing c;
-    if (x1 - x0 > 2 * BLOCK_SIZE || y1 - y0 > 2 * BLOCK_SIZE || w->tx1 - w->tx0 < BLOCK_SIZE ||
-        p->depth.keep != ~(uint64_t)0)
+    if (!p->small || x1 - x0 > 2 * BLOCK_SIZE || y1 - y0 > 2 * BLOCK_SIZE ||
+        w->tx1 - w->tx0 < BLOCK_SIZE || p->depth.keep != ~(uint64_t)0)
         return false;
+    const BlockKernels *kernels = p->plain ? &PLAIN_KERNELS : w->k; /* the screen holds it */
     for (int y = y0; y < y1; y += BLOCK_SIZE)
         for (int x = x0; x < x1; x += BLOCK_SIZE) {
             int left = imin(x, w->tx1 - BLOCK_SIZE); /* the window's first column */
             uint64_t box = box_mask(x - left, imin(x + BLOCK_SIZE, x1) - left, 0,
-                                    imin(y + BLOCK_SIZE, y1) - y);
-            for (c.n = 0; p->small && c.n < (int)p->n; c.n++) /* every edge, none sorted out */
-                c.a[c.n] = e[c.n].a, c.b[c.n] = e[c.n].b, c.g[c.n] = (int32_t)edge_at(e + c.n, left, y);
-            if (p->small || (box = block_coverage(e, p->n, left, y, box, &c)))
-                draw_block(w, p, NULL, 0, left, y, box, &c, true); /* not asked: no plane */
+                                    imin(y + BLOCK_SIZE, y1) - y), inside;
+            size_t i = (size_t)(y - w->oy) * w->stride + (size_t)(left - w->ox);
+            float far; /* not asked for */
+            uint64_t passed = kernels->draw(w->depth + i, w->face + i, w->stride, left, y, box, e,
+                                            (int)p->n, &p->depth, &inside, &far);
+            count(w, inside, passed);
         }
     return true;
 }
@@ -240,9 +243,8 @@ static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
         return;
     Primitive plane = plane_of(w, &p->depth);
     float farthest = w->hiz ? hiz_bound(&plane, x0, y0, x1 - 1, y1 - 1, false) : 0;
-    EdgeFn crossing[POLYGON_MAX_CORNERS];
-    Crossing c; /* the edges crossing a block, for the kernel */
-    uint32_t n = 0;
+    EdgeFn crossing[POLYGON_MAX_CORNERS], crossed[POLYGON_MAX_CORNERS]; /* tile's, block's */
+    int n = 0, m; /* of each */
     for (uint32_t k = 0; k < p->n; k++) {
         int64_t hi = edge_max(&e[k], x0, y0, x1 - 1 - x0, y1 - 1 - y0);
         int64_t lo = hi - (int64_t)abs(e[k].a) * (x1 - 1 - x0) - (int64_t)abs(e[k].b) * (y1 - 1 - y0);
@@ -255,8 +257,8 @@ static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
         for (int bx = x0 & ~LAST; bx < x1; bx += BLOCK_SIZE) {
             uint64_t box = box_mask(imax(p->x0 - bx, 0), imin(p->x1 - bx, BLOCK_SIZE),
                                     imax(p->y0 - by, 0), imin(p->y1 - by, BLOCK_SIZE));
-            if ((box = block_coverage(crossing, n, bx, by, box, &c)))
-                draw_block(w, p, &plane, farthest, bx, by, box, &c, false);
+            if ((box = block_coverage(crossing, n, bx, by, box, crossed, &m)))
+                draw_block(w, p, &plane, farthest, bx, by, box, crossed, m);
         }
 }
 
@@ -277,16 +279,21 @@ static void draw_tile(TileWork *w, Bins *b, int tile)
     write_tile(w); /* extras/memory.c: its own memory, if it had one, back in the target */
 }
 
-typedef struct { Bins *b; const int *tiles; int ntiles; atomic_int next; } Work;
+typedef struct { Bins *b; int ntiles; atomic_int next; } Work;
 typedef struct { _Alignas(64) Work *work; TileWork tw; } Thread; /* no cache line shared */
 
-/* Takes tiles until none is left: no two threads share a pixel, each tile is
- * drawn in order, so the picture does not depend on who took which tile. */
+/* Takes tiles, down each column (side by side, two threads' tiles would share
+ * cache lines of the tile buffer), until none is left: no two threads share a
+ * pixel, each tile is drawn in order: the picture does not depend on who took which. */
 static void *draw_tiles(void *arg)
 {
     Thread *th = arg;
-    for (int k; (k = atomic_fetch_add(&th->work->next, 1)) < th->work->ntiles;)
-        draw_tile(&th->tw, th->work->b, th->work->tiles[k]);
+    Bins *b = th->work->b;
+    for (int n; (n = atomic_fetch_add(&th->work->next, 1)) < th->work->ntiles;) {
+        int k = n % b->tiles_y * b->tiles_x + n / b->tiles_y; /* row n % tiles_y */
+        if (tile_busy(b, k) || (b->cleared && b->cleared[k])) /* else nothing to do */
+            draw_tile(&th->tw, b, k);
+    }
     return NULL;
 }
 
@@ -297,19 +304,14 @@ bool fast_finish(Target *t, LessonState *s, Error *err)
         return true;
     set_up_held_faces(t, s);
     Bins *b = fr->bins;
-    int ntiles = b ? b->tiles_x * b->tiles_y : 0, busy = 0;
     int nthreads = fr->count ? 1 : imax(1, fr->threads), started = 1;
-    int *tiles = b ? malloc((size_t)ntiles * sizeof *tiles) : NULL;
-    Thread *th = tiles ? aligned_alloc(64, (size_t)nthreads * sizeof *th) : NULL;
+    Thread *th = b ? aligned_alloc(64, (size_t)nthreads * sizeof *th) : NULL;
     pthread_t *id = th ? malloc((size_t)nthreads * sizeof *id) : NULL;
-    for (int k = 0; id && k < ntiles; k++)
-        if (tile_busy(b, k) || (b->cleared && b->cleared[k]))
-            tiles[busy++] = k;
-    Work work = {.b = b, .tiles = tiles, .ntiles = busy};
+    Work work = {.b = b, .ntiles = b ? b->tiles_x * b->tiles_y : 0};
     atomic_init(&work.next, 0);
     for (int i = 0; id && i < nthreads; i++)
         th[i].work = &work, tile_work_begin(&th[i].tw, t, s);
-    while (id && started < imin(nthreads, busy) &&
+    while (id && started < imin(nthreads, work.ntiles) &&
            pthread_create(&id[started], NULL, draw_tiles, &th[started]) == 0)
         started++;
     if (id)
@@ -320,7 +322,7 @@ bool fast_finish(Target *t, LessonState *s, Error *err)
         tile_work_end(&th[i].tw);
     }
     bins_empty(b);
-    free(id), free(th), free(tiles);
+    free(id), free(th);
     fr->out_of_memory = fr->out_of_memory || (b && !id);
     if (fr->out_of_memory && err)
         error_set(err, "out of memory for the bins and tiles: the picture is not whole");

@@ -76,13 +76,12 @@ struct Bins {
 };
 
 typedef struct { /* simd.c's AVX2; extras/kernels.c's plain C and SSE2: the same bits */
-    /* The pixels of box where each g[k] + a[k] i + b[k] j >= 0 (32 bits). */
-    uint64_t (*coverage)(const int32_t *g, const int32_t *a, const int32_t *b, int n,
-                         uint64_t box);
-    /* Tests mask's pixels of the block at (x0, y0) (its first at depth[0]):
-     * those that passed; *farthest the block's farthest value then, or NaN. */
-    uint64_t (*depth_test)(float *depth, int32_t *face, size_t stride, int x0, int y0,
-                           uint64_t mask, const BlockDepth *d, float *farthest);
+    /* The block at (x0, y0), its first pixel at depth[0]: its pixels of box inside e's
+     * n edges (values there in 32 bits; none: all of box), *inside, tested: those that
+     * passed. *farthest: the block's farthest value after, when every row had one; or NaN. */
+    uint64_t (*draw)(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t box,
+                     const EdgeFn *e, int n, const BlockDepth *d, uint64_t *inside,
+                     float *farthest);
 } BlockKernels;
 #define ROW(mask, j) ((int)((mask) >> (8 * (j)) & 0xff)) /* row j's 8 bits */
 

@@ -1,8 +1,7 @@
 /* main.c: lesson 10, a fast rasterizer (docs/10_fast_raster.md): the outline.
- * What it teaches is in fast_raster.c (in place of lesson 09's tiles.c):
- * lesson 09's pictures in tiles and blocks, each block asking lesson 09's
- * tile buffer first; with threads, and SIMD (simd.c). What it shows but does
- * not teach (its flags, plain C and SSE2 kernels, memory) is in extras/. */
+ * What it teaches is in fast_raster.c (lesson 09's pictures in tiles and
+ * blocks, each asking lesson 09's tile buffer first; threads) and simd.c.
+ * What it shows but does not teach (flags, plain C and SSE2, memory): extras/. */
 #include "extras/extras.h" /* and lesson 09's hierarchical_z.h */
 #include "fast_raster.h"
 #include "harness/lesson.h"

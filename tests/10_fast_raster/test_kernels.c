@@ -1,9 +1,9 @@
-/* test_kernels.c: lesson 10's block kernels (fast_raster.h) give the same
- * bits in plain C, SSE2 and AVX2: the coverage of random edges (and that of
- * a brute force in 64-bit integers), the depth test of random planes over
- * random buffers in every format and mapping, cutout or not: which pixels
- * passed, the depth and face buffers after it, and the block's farthest
- * value. A kernel the machine lacks (AVX2) is skipped. */
+/* test_kernels.c: lesson 10's block kernel (fast_raster.h) gives the same
+ * bits in plain C, SSE2 and AVX2: the pixels of a box inside 0 to 5 random
+ * edges (and those of a brute force in 64-bit integers), then the depth test
+ * of random planes over random buffers in every format and mapping, cutout or
+ * not: which pixels passed, the depth and face buffers after it, and the
+ * block's farthest value. A kernel the machine lacks (AVX2) is skipped. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -53,41 +53,56 @@ static int others(const BlockKernels **k, const char **name)
     return n;
 }
 
+typedef struct { float depth[8 * STRIDE]; int32_t face[8 * STRIDE]; } Block;
+
+/* n random edges whose values over the block at (x0, y0) fit in 32 bits, as
+ * the kernel's contract asks. */
+static void random_edges(EdgeFn *e, int n, int x0, int y0)
+{
+    for (int k = 0; k < n; k++) {
+        int32_t size = between(1, 1 << between(0, 26));
+        e[k].a = between(-size, size), e[k].b = between(-size, size);
+        int32_t reach = 7 * (abs(e[k].a) + abs(e[k].b)), g = between(-reach, reach);
+        e[k].c = g - (int64_t)e[k].a * x0 - (int64_t)e[k].b * y0; /* g at the block's first */
+    }
+}
+
 static void every_kernel_covers_the_pixels_of_a_brute_force(void **state_)
 {
     (void)state_;
     const BlockKernels *k[2];
     const char *name[2];
     int nk = others(k, name);
+    BlockDepth d = {0, 0, 0, 0, 0, false, 7, ~(uint64_t)0, FLOAT32}; /* z_w 0: every pixel passes */
     for (int round = 0; round < ROUNDS; round++) {
-        int32_t g[4], a[4], b[4];
-        int n = between(1, 4);
-        for (int e = 0; e < n; e++) { /* values over the block within 32 bits */
-            int32_t size = between(1, 1 << between(0, 26));
-            a[e] = between(-size, size), b[e] = between(-size, size);
-            int32_t reach = 7 * (abs(a[e]) + abs(b[e]));
-            g[e] = between(-reach, reach);
-        }
+        EdgeFn e[5];
+        int n = between(0, 5), x0 = 8 * between(0, 2000), y0 = 8 * between(0, 2000);
+        random_edges(e, n, x0, y0);
         uint64_t box = next() | 1, want = 0;
         for (int bit = 0; bit < 64; bit++) {
             bool inside = box >> bit & 1;
-            for (int e = 0; e < n; e++)
-                inside = inside && (int64_t)g[e] + (int64_t)a[e] * (bit % 8) +
-                                           (int64_t)b[e] * (bit / 8) >= 0;
+            for (int j = 0; j < n; j++)
+                inside = inside && e[j].c + (int64_t)e[j].a * (x0 + bit % 8) +
+                                           (int64_t)e[j].b * (y0 + bit / 8) >= 0;
             want |= (uint64_t)inside << bit;
         }
-        uint64_t got = PLAIN_KERNELS.coverage(g, a, b, n, box);
-        if (got != want)
-            fail_msg("round %d: plain C covers %016llx, the brute force %016llx", round,
-                     (unsigned long long)got, (unsigned long long)want);
-        for (int j = 0; j < nk; j++)
-            if ((got = k[j]->coverage(g, a, b, n, box)) != want)
-                fail_msg("round %d: %s covers %016llx, the brute force %016llx", round, name[j],
-                         (unsigned long long)got, (unsigned long long)want);
+        for (int j = -1; j < nk; j++) {
+            const BlockKernels *kj = j < 0 ? &PLAIN_KERNELS : k[j];
+            Block b;
+            for (int i = 0; i < 8 * STRIDE; i++)
+                b.depth[i] = 1.0f, b.face[i] = -1;
+            uint64_t inside;
+            float far;
+            uint64_t passed = kj->draw(b.depth, b.face, STRIDE, x0, y0, box, e, n, &d, &inside, &far);
+            if (inside != want || passed != want)
+                fail_msg("round %d: %s covers %016llx and passes %016llx, the brute force covers "
+                         "%016llx", round, j < 0 ? "plain C" : name[j],
+                         (unsigned long long)inside, (unsigned long long)passed,
+                         (unsigned long long)want);
+        }
     }
 }
 
-typedef struct { float depth[8 * STRIDE]; int32_t face[8 * STRIDE]; } Block;
 
 static float random_stored(const BlockDepth *d)
 {
@@ -109,35 +124,41 @@ static void every_kernel_tests_depth_as_plain_c(void **state_)
                         (float)((unit() - 0.5) * 1e-3), (float)((unit() - 0.5) * 1e-5),
                         UNORM[f], next() & 1, between(0, 1000),
                         next() & 1 ? ~(uint64_t)0 : 0xf0f0f0f00f0f0f0full, FORMATS[f]};
-        int x0 = 8 * between(0, 2000), y0 = 8 * between(0, 2000);
-        uint64_t mask = next() & next();
+        int x0 = 8 * between(0, 2000), y0 = 8 * between(0, 2000), n = between(0, 5);
+        EdgeFn e[5];
+        random_edges(e, n, x0, y0);
+        uint64_t box = next() & next() ? next() & next() : 1;
         if (next() & 1)
-            mask = ~(uint64_t)0; /* every row: the kernels hand back the farthest */
+            box = ~(uint64_t)0, n = next() & 1 ? 0 : n; /* covered whole: the farthest back */
         Block start;
         for (int i = 0; i < 8 * STRIDE; i++)
             start.depth[i] = random_stored(&d), start.face[i] = between(-1, 1000);
         Block plain = start;
         float plain_far;
-        uint64_t want = PLAIN_KERNELS.depth_test(plain.depth, plain.face, STRIDE, x0, y0, mask,
-                                                 &d, &plain_far);
+        uint64_t plain_inside;
+        uint64_t want = PLAIN_KERNELS.draw(plain.depth, plain.face, STRIDE, x0, y0, box, e, n, &d,
+                                           &plain_inside, &plain_far);
         float far = plain.depth[0]; /* the block's farthest value after the test */
         for (int i = 0; i < 64; i++) {
             float v = plain.depth[i / 8 * STRIDE + i % 8];
             far = d.reversed ? fminf(far, v) : fmaxf(far, v);
         }
-        if (mask == ~(uint64_t)0 && plain_far != far)
+        if (plain_inside == ~(uint64_t)0 && plain_far != far)
             fail_msg("round %d: plain C says the farthest is %.9g, the buffer %.9g", round,
                      (double)plain_far, (double)far);
         for (int j = 0; j < nk; j++) {
             Block b = start;
             float b_far;
-            uint64_t got = k[j]->depth_test(b.depth, b.face, STRIDE, x0, y0, mask, &d, &b_far);
-            if (got != want)
-                fail_msg("round %d: %s passed %016llx, plain C %016llx", round, name[j],
-                         (unsigned long long)got, (unsigned long long)want);
+            uint64_t inside;
+            uint64_t got = k[j]->draw(b.depth, b.face, STRIDE, x0, y0, box, e, n, &d, &inside,
+                                      &b_far);
+            if (got != want || inside != plain_inside)
+                fail_msg("round %d: %s passed %016llx of %016llx, plain C %016llx of %016llx",
+                         round, name[j], (unsigned long long)got, (unsigned long long)inside,
+                         (unsigned long long)want, (unsigned long long)plain_inside);
             if (memcmp(&b, &plain, sizeof b) != 0)
                 fail_msg("round %d: %s left other depths or faces than plain C", round, name[j]);
-            if (mask == ~(uint64_t)0 && b_far != far)
+            if (inside == ~(uint64_t)0 && b_far != far)
                 fail_msg("round %d: %s says the farthest is %.9g, the buffer %.9g", round,
                          name[j], (double)b_far, (double)far);
         }

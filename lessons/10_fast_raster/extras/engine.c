@@ -139,8 +139,8 @@ static bool draw_simple_triangle(Target *t, LessonState *s, const ScreenFace *f,
 {
     ScreenVertex v[3];
     for (int j = 0; j < 3; j++) {
-        v[j] = f->v[tri->c[j]];
-        if (!(isfinite(v[j].x) && isfinite(v[j].y) && isfinite(v[j].d) && v[j].d > 0))
+        v[j] = f->v[tri->c[j]]; /* x and y: finite if in the guard band (below) */
+        if (!(v[j].d > 0 && v[j].d < INFINITY))
             return false;
         const Vec4 *c = f->clip ? &f->clip[tri->c[j]] : NULL;
         if (c && !(plane_distance(*c, NEAR_PLANE) >= 0 && plane_distance(*c, FAR_PLANE) >= 0))
@@ -198,7 +198,7 @@ static int64_t snap(double pixels) /* lesson 04's floor(pixels S + 1/2), without
 
 bool snap_corner(const ScreenVertex *v, Corner *c)
 {
-    if (!(isfinite(v->x) && isfinite(v->y) && isfinite(v->d) && v->d > 0 &&
+    if (!(v->d > 0 && v->d < INFINITY && /* a NaN fails each */
           fabs(v->x) <= SCANLINE_MAX_COORD && fabs(v->y) <= SCANLINE_MAX_COORD))
         return false;
     *c = (Corner){snap(v->x), snap(v->y)};

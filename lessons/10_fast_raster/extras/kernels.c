@@ -1,26 +1,14 @@
-/* kernels.c: lesson 10's block kernels (fast_raster.h) in plain C, one pixel
+/* kernels.c: lesson 10's block kernel (fast_raster.h) in plain C, one pixel
  * at a time, and with SSE2, a block row in two registers of 4: the same as
- * simd.c's AVX2 kernels (the page teaches those), for --simd none and sse2,
- * for a plane only plain C takes, and for an x86-64 without AVX2. They give
- * the same bits (simd.c says how). Then which kernels run (kernels_of). */
+ * simd.c's AVX2 kernel (the page teaches that one), for --simd none and
+ * sse2, for a plane only plain C takes, and for an x86-64 without AVX2. Both
+ * find the pixels inside the edges first, then test them.
+ * They give the same bits (simd.c says how). Then which kernels run. */
 #include "engine.h"
 
 #include <math.h>
 
 /* ---- Plain C: one pixel at a time ---------------------------------------- */
-
-static uint64_t plain_coverage(const int32_t *g, const int32_t *a, const int32_t *b, int n,
-                               uint64_t box)
-{
-    uint64_t mask = 0;
-    for (int bit = 0; bit < 64; bit++) {
-        bool inside = box >> bit & 1;
-        for (int k = 0; k < n && inside; k++)
-            inside = g[k] + a[k] * (bit % 8) + b[k] * (bit / 8) >= 0;
-        mask |= (uint64_t)inside << bit;
-    }
-    return mask;
-}
 
 float farthest_of(const float *v, int n, bool reversed)
 {
@@ -68,15 +56,48 @@ static uint64_t plain_depth_test(float *depth, int32_t *face, size_t stride, int
     return passed;
 }
 
-const BlockKernels PLAIN_KERNELS = {plain_coverage, plain_depth_test};
+/* The pixels of box inside e's n edges: their values there fit in 32 bits. */
+typedef uint64_t Inside(const EdgeFn *e, int n, int x0, int y0, uint64_t box);
+typedef uint64_t DepthTest(float *depth, int32_t *face, size_t stride, int x0, int y0,
+                           uint64_t mask, const BlockDepth *d, float *farthest);
+
+static uint64_t plain_inside(const EdgeFn *e, int n, int x0, int y0, uint64_t box)
+{
+    uint64_t mask = box;
+    for (uint64_t left = box; left; left &= left - 1) { /* each pixel of box */
+        int bit = __builtin_ctzll(left), x = x0 + bit % 8, y = y0 + bit / 8;
+        for (int k = 0; k < n && mask >> bit & 1; k++)
+            if (e[k].c + (int64_t)e[k].a * x + (int64_t)e[k].b * y < 0)
+                mask &= ~((uint64_t)1 << bit); /* outside edge k */
+    }
+    return mask;
+}
+
+/* The kernel in plain C and SSE2: the pixels inside first, then those
+ * tested (none: not called, no farthest value). */
+static uint64_t inside_then(Inside *cover, DepthTest *test, float *depth, int32_t *face,
+                            size_t stride, int x0, int y0, uint64_t box, const EdgeFn *e, int n,
+                            const BlockDepth *d, uint64_t *inside, float *farthest)
+{
+    *inside = n > 0 ? cover(e, n, x0, y0, box) : box, *farthest = NAN;
+    return *inside ? test(depth, face, stride, x0, y0, *inside, d, farthest) : 0;
+}
+
+static uint64_t plain_draw(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t box,
+                           const EdgeFn *e, int n, const BlockDepth *d, uint64_t *in, float *far)
+{
+    return inside_then(plain_inside, plain_depth_test, depth, face, stride, x0, y0, box, e, n, d,
+                       in, far);
+}
+
+const BlockKernels PLAIN_KERNELS = {plain_draw};
 
 #if defined(__x86_64__)
 #include <immintrin.h>
 
 /* ---- SSE2: a block row is two registers of 4 ---------------------------- */
 
-static uint64_t sse2_coverage(const int32_t *g, const int32_t *a, const int32_t *b, int n,
-                              uint64_t box)
+static uint64_t sse2_inside(const EdgeFn *e, int n, int x0, int y0, uint64_t box)
 {
     uint64_t outside = 0;
     for (int j = 0; j < 8; j++) {
@@ -84,10 +105,11 @@ static uint64_t sse2_coverage(const int32_t *g, const int32_t *a, const int32_t 
             continue;
         __m128i lo = _mm_setzero_si128(), hi = lo;
         for (int k = 0; k < n; k++) { /* an OR is negative when one of them is */
-            __m128i v = _mm_add_epi32(_mm_set1_epi32(g[k] + j * b[k]),
-                                      _mm_set_epi32(3 * a[k], 2 * a[k], a[k], 0));
+            int32_t g = (int32_t)(e[k].c + (int64_t)e[k].a * x0 + (int64_t)e[k].b * (y0 + j));
+            __m128i v = _mm_add_epi32(_mm_set1_epi32(g),
+                                      _mm_set_epi32(3 * e[k].a, 2 * e[k].a, e[k].a, 0));
             lo = _mm_or_si128(lo, v);
-            hi = _mm_or_si128(hi, _mm_add_epi32(v, _mm_set1_epi32(4 * a[k])));
+            hi = _mm_or_si128(hi, _mm_add_epi32(v, _mm_set1_epi32(4 * e[k].a)));
         }
         int bits = _mm_movemask_ps(_mm_castsi128_ps(lo)) |
                    _mm_movemask_ps(_mm_castsi128_ps(hi)) << 4;
@@ -155,7 +177,14 @@ static uint64_t sse2_depth_test(float *depth, int32_t *face, size_t stride, int 
     return passed;
 }
 
-const BlockKernels SSE2_KERNELS = {sse2_coverage, sse2_depth_test};
+static uint64_t sse2_draw(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t box,
+                          const EdgeFn *e, int n, const BlockDepth *d, uint64_t *inside, float *far)
+{
+    return inside_then(sse2_inside, sse2_depth_test, depth, face, stride, x0, y0, box, e, n, d,
+                       inside, far);
+}
+
+const BlockKernels SSE2_KERNELS = {sse2_draw};
 
 #endif
 

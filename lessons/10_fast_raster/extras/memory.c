@@ -9,6 +9,7 @@
 #include "state.h"
 
 #define OWN_WORK (4 * TILE_SIZE * TILE_SIZE) /* pixels of boxes: a tile in its own memory */
+_Static_assert(NO_FACE == -1, "a cleared face row is every byte 0xff (memset)");
 
 /* The pixels of the tile that its polygons' boxes hold, in all. */
 static long tile_work(const Bins *b, int tile)
@@ -36,15 +37,14 @@ void tile_memory(TileWork *w, Bins *b, int tile)
     w->ox = own ? w->tx0 : 0, w->oy = own ? w->ty0 : 0;
     size_t n = (size_t)(w->tx1 - w->tx0);
     float cleared[TILE_SIZE]; /* a cleared row, copied: a copy is faster than a loop */
-    int32_t none[TILE_SIZE];
     for (size_t i = 0; clear && i < n; i++)
-        cleared[i] = b->clear, none[i] = NO_FACE;
+        cleared[i] = b->clear;
     for (int y = w->ty0; (own || clear) && y < w->ty1; y++) {
         float *depth = w->depth + (size_t)(y - w->oy) * w->stride + (size_t)(w->tx0 - w->ox);
         int32_t *face = w->face + (size_t)(y - w->oy) * w->stride + (size_t)(w->tx0 - w->ox);
         size_t from = (size_t)y * (size_t)t->width + (size_t)w->tx0;
         if (clear)
-            memcpy(depth, cleared, n * sizeof *depth), memcpy(face, none, n * sizeof *face);
+            memcpy(depth, cleared, n * sizeof *depth), memset(face, 0xff, n * sizeof *face);
         else
             memcpy(depth, t->depth + from, n * sizeof *depth),
                 memcpy(face, t->face + from, n * sizeof *face);
