@@ -41,11 +41,6 @@ static EdgeFn edge_function(Corner from, Corner to)
     /* SOLUTION END */
 }
 
-static int64_t edge_at(const EdgeFn *e, int x, int y)
-{
-    return (int64_t)e->a * x + (int64_t)e->b * y + e->c;
-}
-
 /* The largest value of e over pixels x0 .. x0 + w, y0 .. y0 + h (a corner's). */
 static int64_t edge_max(const EdgeFn *e, int x0, int y0, int w, int h)
 {

@@ -49,6 +49,10 @@ extern const Rasterizer FAST_ZBUFFER; /* the clear; faces set up and binned; the
 
 typedef struct { int64_t x, y; } Corner;            /* snapped, as lesson 04 */
 typedef struct { int64_t c; int32_t a, b; } EdgeFn; /* a x + b y + c >= 0: inside */
+static inline int64_t edge_at(const EdgeFn *e, int x, int y) /* e at pixel (x, y) */
+{
+    return (int64_t)e->a * x + (int64_t)e->b * y + e->c;
+}
 typedef struct {
     float a0, gx, gy, offset; /* z_w = a0 + gx x + gy y + offset, in this order */
     float unorm;              /* 2^bits - 1 for a unorm format, 0 for float32 */

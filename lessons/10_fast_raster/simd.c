@@ -14,7 +14,7 @@
 
 AVX2 static inline __m256i edge_values(const EdgeFn *e, int x0, int y) /* along row y from x0 */
 {
-    __m256i at = _mm256_set1_epi32((int32_t)(e->c + (int64_t)e->a * x0 + (int64_t)e->b * y));
+    __m256i at = _mm256_set1_epi32((int32_t)edge_at(e, x0, y));
     return _mm256_add_epi32(at, _mm256_mullo_epi32(_mm256_set_epi32(7, 6, 5, 4, 3, 2, 1, 0),
                                                    _mm256_set1_epi32(e->a)));
 }

@@ -292,7 +292,7 @@ void draw_pixels(TileWork *w, const Poly *p, const EdgeFn *e)
         for (int x = x0; x < x1; x++) {
             bool inside = true;
             for (uint32_t k = 0; k < p->n && inside; k++)
-                inside = (int64_t)e[k].a * x + (int64_t)e[k].b * y + e[k].c >= 0;
+                inside = edge_at(&e[k], x, y) >= 0;
             if (inside)
                 test_pixel(w, &p->depth, x, y);
         }

@@ -67,7 +67,7 @@ static uint64_t plain_inside(const EdgeFn *e, int n, int x0, int y0, uint64_t bo
     for (uint64_t left = box; left; left &= left - 1) { /* each pixel of box */
         int bit = __builtin_ctzll(left), x = x0 + bit % 8, y = y0 + bit / 8;
         for (int k = 0; k < n && mask >> bit & 1; k++)
-            if (e[k].c + (int64_t)e[k].a * x + (int64_t)e[k].b * y < 0)
+            if (edge_at(&e[k], x, y) < 0)
                 mask &= ~((uint64_t)1 << bit); /* outside edge k */
     }
     return mask;
@@ -105,7 +105,7 @@ static uint64_t sse2_inside(const EdgeFn *e, int n, int x0, int y0, uint64_t box
             continue;
         __m128i lo = _mm_setzero_si128(), hi = lo;
         for (int k = 0; k < n; k++) { /* an OR is negative when one of them is */
-            int32_t g = (int32_t)(e[k].c + (int64_t)e[k].a * x0 + (int64_t)e[k].b * (y0 + j));
+            int32_t g = (int32_t)edge_at(&e[k], x0, y0 + j);
             __m128i v = _mm_add_epi32(_mm_set1_epi32(g),
                                       _mm_set_epi32(3 * e[k].a, 2 * e[k].a, e[k].a, 0));
             lo = _mm_or_si128(lo, v);
