@@ -3,7 +3,8 @@
  *   bar_chart IN.csv OUT.png "Y AXIS LABEL"
  *
  * IN.csv: a header line "group,series 1,series 2,..." (up to 8 series), then
- * one line per group (up to 12): its label, then one number (>= 0) per
+ * one line per group (up to 12): its label ('|' breaks it into lines, two
+ * fit below the axis), then one number (>= 0) per
  * series. Each group is a cluster of bars along the x axis, one bar per
  * series in the series' colour (the legend names them); the y axis starts at
  * 0, with ticks and grid lines. Exit status: 0 written, 1 could not read or
@@ -23,7 +24,7 @@
 #define MAX_SERIES 8
 #define MAX_GROUPS 12
 #define MAX_NAME 40
-#define WIDTH 1120
+#define WIDTH 1280
 #define HEIGHT 540
 #define SCALE 2 /* the 5 x 7 font at twice its size */
 #define LEFT 96
@@ -145,8 +146,14 @@ static void draw_chart(Image *im, const Chart *c, const char *y_label)
             box(im, (int)lround(x0 + s * bar_w), TOP + plot_h - h,
                 (int)lround(x0 + (s + 1) * bar_w) - 1, TOP + plot_h, SERIES[s]);
         }
-        label(im, (int)lround(LEFT + (g + 0.5) * group_w), TOP + plot_h + 12, c->group[g], true,
-              INK);
+        const char *name = c->group[g]; /* its lines, split at each '|' */
+        for (int y = TOP + plot_h + 12; *name; y += (FONT_LINE_HEIGHT + 2) * SCALE) {
+            char line[MAX_NAME];
+            int n = (int)strcspn(name, "|");
+            snprintf(line, sizeof line, "%.*s", n, name);
+            label(im, (int)lround(LEFT + (g + 0.5) * group_w), y, line, true, INK);
+            name += n + (name[n] == '|');
+        }
     }
     box(im, LEFT, TOP, LEFT + 2, TOP + plot_h, INK); /* the axes */
     box(im, LEFT, TOP + plot_h, WIDTH - RIGHT, TOP + plot_h + 2, INK);

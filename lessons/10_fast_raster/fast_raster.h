@@ -31,6 +31,7 @@ typedef struct {
     bool count;       /* overdraw[] and --trace: plain C, one thread */
     uint64_t keep;    /* the face's pixels a cutout keeps, in any block */
     Bins *bins; Held *held;
+    bool hold;        /* with threads: faces held back for them to set up (else: by this one) */
     bool set_up_only; /* a thread's copy, setting faces up: it never draws */
     bool out_of_memory; /* an allocation failed: a face or a tile went undrawn */
 } FastRaster;

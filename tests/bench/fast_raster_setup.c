@@ -1,7 +1,8 @@
 /* fast_raster_setup.c: lesson 10 in the benchmark (bench_setup.h): its
  * engine with unorm24, standard (as llvmpipe's rows use), the widest SIMD the
  * machine has, once with one thread and once with one per core. To time
- * another kernel: FAST_RASTER_SIMD=none (or sse2, or pixels) in the environment. */
+ * another kernel: FAST_RASTER_SIMD=none (or sse2, or pixels) in the environment;
+ * every face set up by the calling thread, none by the others: FAST_RASTER_SET_UP=one. */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -41,6 +42,8 @@ LessonState *bench_configure(Target *t, int k, char *name, int size, bool *wall_
         simd = SIMD_PIXELS;
     engine = fast_raster(depth_setup(UNORM24, STANDARD, WORKLOAD_NEAR, WORKLOAD_FAR), simd,
                          threads, false);
+    const char *set_up = getenv("FAST_RASTER_SET_UP");
+    engine.fast.hold = !(set_up && strcmp(set_up, "one") == 0); /* one: by this thread alone */
     snprintf(name, (size_t)size, "10_fast_raster_%dt", threads);
     *wall_clock = threads > 1;
     return &engine;

@@ -99,7 +99,7 @@ static void bar_chart_draws_and_never_replaces_its_input(void **state)
     assert_int_equal(r.status, 0);
     run_result_free(&r);
     Image chart = read_png(out);
-    expect_count(1120, chart.width, "chart width");
+    expect_count(1280, chart.width, "chart width");
     image_free(&chart);
 
     const char *onto[] = {in, same, "milliseconds", NULL};

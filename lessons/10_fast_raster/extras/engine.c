@@ -116,7 +116,8 @@ Bins *bins_of(Target *t, LessonState *s)
 LessonState fast_raster(DepthSetup depth, Simd simd, int threads, bool count)
 {
     return (LessonState){.depth = depth, .fast = {.simd = simd, .threads = threads,
-                                                  .count = count, .keep = ~(uint64_t)0}};
+                                                  .count = count, .keep = ~(uint64_t)0,
+                                                  .hold = true}};
 }
 
 void fast_raster_free(FastRaster *fr)
@@ -153,11 +154,12 @@ static bool draw_simple_triangle(Target *t, LessonState *s, const ScreenFace *f,
     return true;
 }
 
-/* A face with threads: held back; else (or when it cannot be) set up now. */
+/* A face, with threads that hold faces (FastRaster.hold): held back; else, or
+ * when it cannot be, set up now. */
 void draw_fast_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx)
 {
     FastRaster *fr = &s->fast;
-    if (fr->count || fr->threads < 2 || fr->set_up_only || !hold_face(t, s, f, ctx))
+    if (fr->count || fr->threads < 2 || !fr->hold || fr->set_up_only || !hold_face(t, s, f, ctx))
         set_up_face(t, s, f, ctx);
 }
 

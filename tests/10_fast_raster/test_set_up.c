@@ -1,0 +1,100 @@
+/* test_set_up.c: lesson 10 draws the same bits whoever sets its faces up.
+ * With two threads its faces are held back and set up by both threads at
+ * fast_finish (extras/held.c); with FastRaster.hold false (the benchmark's
+ * FAST_RASTER_SET_UP=one) each is set up by the calling thread as it comes,
+ * and the threads only draw. Both must give the depth and face buffers of
+ * one thread, to the bit: random triangles and quads of every size, some
+ * across the screen's edges, in more polygons than the bins take at once. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <string.h>
+
+#include "engine.h" /* extras/: simd_best */
+#include "fast_raster.h"
+#include "state.h"
+#include "test_support.h"
+
+#define WIDTH 320
+#define HEIGHT 240
+#define FACES 12000 /* over 8,192 polygons: the bins are drawn and emptied on the way */
+
+static uint64_t state = 88172645463325252ull;
+
+static double unit(void) /* xorshift64 in [0, 1): the same faces on every machine */
+{
+    state ^= state << 13;
+    state ^= state >> 7;
+    state ^= state << 17;
+    return (double)(state >> 11) / 9007199254740992.0;
+}
+
+/* The same FACES faces, drawn by an engine of threads threads that holds its
+ * faces back for them (hold) or sets each up as it comes. */
+static Target draw(int threads, bool hold)
+{
+    Target t;
+    Error err;
+    if (!target_init(&t, WIDTH, HEIGHT, &err))
+        fail_msg("target_init: %s", err.msg);
+    LessonState s = fast_raster(depth_setup(UNORM24, STANDARD, 0.1, 1000.0), simd_best(),
+                                threads, false);
+    s.fast.hold = hold;
+    FAST_ZBUFFER.clear(&t, &s);
+    state = 88172645463325252ull;
+    DrawContext ctx = {0.1, 1000.0, WIDTH, HEIGHT};
+    static const Tri tris[2] = {{{0, 1, 2}}, {{0, 2, 3}}};
+    for (int i = 0; i < FACES; i++) {
+        double size = i % 100 == 0 ? 200 : i % 10 == 0 ? 40 : 6; /* a few large, most small */
+        double x = unit() * (WIDTH + 40) - 20, y = unit() * (HEIGHT + 40) - 20;
+        double w = 1 + unit() * size, h = 1 + unit() * size, slant = (unit() - 0.5) * size;
+        ScreenVertex v[4] = {{x, y, 1 + 99 * unit()}, {x + w, y + slant, 1 + 99 * unit()},
+                             {x + w, y + slant + h, 1 + 99 * unit()}, {x, y + h, 0}};
+        v[3].d = v[0].d + v[2].d - v[1].d > 0.5 ? v[0].d + v[2].d - v[1].d : 0.5; /* about a plane */
+        ScreenFace f = {i, i % 3 == 0 ? 4 : 3, v, tris, true, NULL}; /* a parallelogram, or half */
+        FAST_ZBUFFER.draw_face(&t, &s, &f, &ctx);
+    }
+    if (!fast_finish(&t, &s, &err))
+        fail_msg("fast_finish: %s", err.msg);
+    fast_raster_free(&s.fast);
+    return t;
+}
+
+static void expect_same_buffers(const Target *want, const Target *got, const char *what)
+{
+    size_t n = (size_t)WIDTH * HEIGHT;
+    for (size_t i = 0; i < n; i++)
+        if (memcmp(&want->depth[i], &got->depth[i], sizeof *got->depth) != 0 ||
+            want->face[i] != got->face[i])
+            fail_msg("%s: pixel (%zu, %zu) has face %d at %.9g, one thread face %d at %.9g", what,
+                     i % WIDTH, i / WIDTH, (int)got->face[i], (double)got->depth[i],
+                     (int)want->face[i], (double)want->depth[i]);
+}
+
+static void faces_set_up_by_one_thread_or_by_both_draw_the_same_bits(void **unused)
+{
+    (void)unused;
+    Target one = draw(1, true), held = draw(2, true), by_caller = draw(2, false);
+    size_t drawn = 0, faces = 0; /* not a blank picture: most pixels, many faces */
+    bool seen[FACES] = {false};
+    for (size_t i = 0; i < (size_t)WIDTH * HEIGHT; i++)
+        if (one.face[i] != NO_FACE)
+            drawn++, faces += !seen[one.face[i]], seen[one.face[i]] = true;
+    assert_true(drawn > (size_t)WIDTH * HEIGHT * 9 / 10);
+    assert_true(faces > FACES / 8);
+    expect_same_buffers(&one, &held, "2 threads, faces held and set up by both");
+    expect_same_buffers(&one, &by_caller, "2 threads, faces set up by the caller");
+    target_free(&one), target_free(&held), target_free(&by_caller);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(faces_set_up_by_one_thread_or_by_both_draw_the_same_bits),
+    };
+    return cmocka_run_group_tests_name("10_fast_raster set-up", tests, NULL, NULL);
+}
