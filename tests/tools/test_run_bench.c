@@ -1,0 +1,116 @@
+/* test_run_bench.c: tests/bench/run-bench.sh, what `make bench` runs, with
+ * stand-in programs that print a CSV line of tests/bench/measure.h each time
+ * they run, their median going down or up from one round to the next.
+ *
+ * Each program runs BENCH_ROUNDS times (3 unless set), and each row is its
+ * round with the least median: here the second round's, not the first's or
+ * the last's. Rounds that leave different depth buffers (another checksum)
+ * fail the run, naming the row; a BENCH_ROUNDS out of 1 to 9 is refused. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "shell.h"
+#include "test_support.h"
+
+#define TIMEOUT 60
+
+/* A stand-in program at dir/name: its nth run prints a line of lesson name,
+ * workload small, median medians[n - 1] (then the last of them), and a depth
+ * checksum that is "same" each time or, when changing, the run's number. */
+static const char *stand_in(const char *dir, const char *name, const char *medians, bool changing)
+{
+    char text[1024];
+    snprintf(text, sizeof text,
+             "#!/bin/sh\n"
+             "n=$(cat \"$0.n\" 2>/dev/null || echo 0); n=$((n + 1)); echo $n >\"$0.n\"\n"
+             "set -- %s; shift $((n <= $# ? n - 1 : $# - 1)); m=$1\n"
+             "echo \"%s,small,8,8,11,100,1000,$m,$m,$m,%s\"\n",
+             medians, name, changing ? "sum$n" : "same");
+    const char *path = write_text_in(dir, name, text);
+    if (chmod(path, 0755) != 0)
+        fail_msg("chmod %s", path);
+    return path;
+}
+
+/* run-bench.sh OUT LIMIT LESSON, with BENCH_ROUNDS=rounds (NULL: unset). */
+static ShellResult run_bench(const char *dir, const char *rounds, const char *limit,
+                             const char *lesson)
+{
+    return run_shell(NULL, TIMEOUT, "%s%s sh tests/bench/run-bench.sh %s/out %s %s",
+                     rounds ? "BENCH_ROUNDS=" : "", rounds ? rounds : "", dir, limit, lesson);
+}
+
+static void each_row_is_its_round_with_the_least_median(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("run_bench_rounds");
+    const char *limit = stand_in(dir, "limit", "0.001", false);
+    const char *lesson = stand_in(dir, "lesson", "0.030 0.010 0.020", false);
+    ShellResult r = run_bench(dir, NULL, limit, lesson);
+    if (r.status != 0)
+        fail_msg("run-bench.sh: status %d\n%s", r.status, r.output);
+    expect_line(r.output, "running lesson, round 3 of 3 ...");
+    if (!strstr(r.output, "each row: the best of 3 rounds"))
+        fail_msg("the table does not say it is the best of 3 rounds:\n%s", r.output);
+    char *csv = read_text(path_join(dir, "out/results.csv"));
+    if (!strstr(csv, "\nlesson,small,8,8,11,100,1000,0.010,0.010,0.010,"))
+        fail_msg("results.csv has not the second round's median, 0.010:\n%s", csv);
+    if (strstr(csv, "0.030") || strstr(csv, "0.020"))
+        fail_msg("results.csv keeps another round than the best:\n%s", csv);
+    char *runs = read_text(path_join(dir, "lesson.n"));
+    assert_string_equal(runs, "3\n"); /* three rounds, each program once a round */
+    free(runs);
+    free(csv);
+    shell_result_free(&r);
+}
+
+static void rounds_that_leave_other_depth_buffers_fail_the_run(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("run_bench_checksums");
+    const char *limit = stand_in(dir, "limit", "0.001", false);
+    const char *lesson = stand_in(dir, "lesson", "0.030 0.010 0.020", true);
+    ShellResult r = run_bench(dir, "2", limit, lesson);
+    assert_int_not_equal(r.status, 0);
+    if (!strstr(r.output, "run-bench.sh: lesson,small: rounds left different depth buffers"))
+        fail_msg("no message naming the row:\n%s", r.output);
+    shell_result_free(&r);
+}
+
+static void rounds_out_of_range_are_refused(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("run_bench_refused");
+    const char *limit = stand_in(dir, "limit", "0.001", false);
+    const char *lesson = stand_in(dir, "lesson", "0.010", false);
+    const char *bad[] = {"0", "10", "three"};
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        ShellResult r = run_bench(dir, bad[k], limit, lesson);
+        assert_int_equal(r.status, 2);
+        char want[96];
+        snprintf(want, sizeof want, "run-bench.sh: BENCH_ROUNDS: '%s' is not 1 to 9", bad[k]);
+        expect_line(r.output, want);
+        shell_result_free(&r);
+    }
+    assert_false(file_exists(path_join(dir, "lesson.n"))); /* refused before any run */
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(each_row_is_its_round_with_the_least_median),
+        cmocka_unit_test(rounds_that_leave_other_depth_buffers_fail_the_run),
+        cmocka_unit_test(rounds_out_of_range_are_refused),
+    };
+    return cmocka_run_group_tests_name("tools: make bench's rounds (run-bench.sh)", tests, NULL,
+                                       NULL);
+}
