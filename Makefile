@@ -51,11 +51,13 @@ COMPILE = $(CC) $(REQUIRED_CPPFLAGS) $(OBJ_INCLUDES) $(CPPFLAGS) \
           $(OPT) $(CFLAGS) $(MODE_CFLAGS) $(call warn_of,$<) $(MODE_WARN)
 LINK    = $(CC) $(OPT) $(CFLAGS) $(MODE_CFLAGS) $(REQUIRED_CFLAGS) $(LDFLAGS)
 
-# Evaluated when a recipe runs, i.e. after tools/ensure-deps.sh has installed them.
-STB_CFLAGS    = $(shell pkg-config --cflags stb zlib)
-STB_LIBS      = $(shell pkg-config --libs stb zlib)
-CMOCKA_CFLAGS = $(shell pkg-config --cflags cmocka)
-CMOCKA_LIBS   = $(shell pkg-config --libs cmocka)
+# Evaluated when a recipe first uses them, i.e. after tools/ensure-deps.sh has
+# installed them, and kept: pkg-config runs once per make, not once per file.
+once = $(eval $(1) := $(shell $(2)))$($(1))
+STB_CFLAGS    = $(call once,STB_CFLAGS,pkg-config --cflags stb zlib)
+STB_LIBS      = $(call once,STB_LIBS,pkg-config --libs stb zlib)
+CMOCKA_CFLAGS = $(call once,CMOCKA_CFLAGS,pkg-config --cflags cmocka)
+CMOCKA_LIBS   = $(call once,CMOCKA_LIBS,pkg-config --libs cmocka)
 
 # A lesson is lessons/NN_name/ with its main.c. The files it inherits from
 # earlier lessons are named in its README.md (tools/lesson-tree.sh): each
@@ -247,8 +249,8 @@ clean:
 # (A handout leaves tests/gpu/ and the tests that use it out: no Mesa for students.)
 GPU_REF      := $(if $(wildcard tests/gpu/gpu_reference.c),$(BUILD)/tools/gpu_reference)
 GPU_DEPS_OK  := $(BUILD)/.gpu-deps-ok
-GL_CFLAGS     = $(shell pkg-config --cflags egl opengl)
-GL_LIBS       = $(shell pkg-config --libs egl opengl)
+GL_CFLAGS     = $(call once,GL_CFLAGS,pkg-config --cflags egl opengl)
+GL_LIBS       = $(call once,GL_LIBS,pkg-config --libs egl opengl)
 
 .PHONY: gpu gpu-check
 gpu: $(GPU_REF)

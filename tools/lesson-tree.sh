@@ -74,6 +74,21 @@ list() {
 assemble() {
     out=$1
     case $out in /*|*..*) usage "assemble wants a directory below the top, not $out" ;; esac
+    # Every make runs this: when no directory under lessons/ and no README.md
+    # changed since the last assembly into $out (DIR/.assembled is newer and
+    # names $out: not a copy at another depth), and every lesson has its
+    # list, the links are as they were: one find, no list.
+    stamp=$out/.assembled was=""
+    if [ -f "$stamp" ]; then read -r was <"$stamp" || was=""; fi
+    if [ "$was" = "$out" ] &&
+        [ -z "$(find lessons \( -type d -o -name README.md \) -newer "$stamp" | head -n 1)" ]; then
+        whole=1
+        for dir in lessons/[0-9][0-9]_*; do
+            [ -d "$dir" ] && [ ! -f "$out/${dir#lessons/}/.files" ] && whole=0
+        done
+        [ $whole -eq 1 ] && return 0
+    fi
+    mkdir -p "$out" && echo "$out" >"$out/.assembling" # its time: before any file is listed
     for dir in lessons/[0-9][0-9]_*; do
         [ -d "$dir" ] || continue
         name=${dir#lessons/}
@@ -105,6 +120,7 @@ assemble() {
         if [ $same -eq 1 ]; then mv "$out/.files.$name" "$out/$name/.files"
         else echo "$want" >"$out/$name/.files"; fi
     done
+    mv "$out/.assembling" "$stamp"
 }
 
 copy() {

@@ -1,5 +1,5 @@
 /* test_bench_workloads.c: `make bench` times lesson 02's real rasterizer: every
- * workload of tests/bench/ leaves the depth buffer render_faces leaves. See
+ * workload of tests/bench/ makes the calls of draw_face render_faces makes. See
  * tests/shared/bench_workloads_suite.inc. */
 #include "raster.h"
 

@@ -29,16 +29,19 @@
 
 typedef struct { uint64_t *hash; int n, cap, stop; } History; /* stop: after that face */
 
-/* After each face: one hash of both buffers (FNV-1a over their bytes);
- * false (the drawing stops) once face h->stop is drawn, when h->stop >= 0. */
+/* After each face: one hash of both buffers (FNV-1a's steps, a pixel's
+ * depth bits and face at a time); false (the drawing stops) once face
+ * h->stop is drawn, when h->stop >= 0. */
 static bool remember(void *data, const Target *t, const ScreenFace *f, Error *err)
 {
     (void)f, (void)err;
     History *h = data;
     uint64_t x = 0xcbf29ce484222325u;
-    const unsigned char *d = (const unsigned char *)t->depth, *g = (const unsigned char *)t->face;
-    for (size_t k = 0; k < (size_t)W * H * 4; k++)
-        x = (x ^ d[k] ^ ((uint64_t)g[k] << 8)) * 0x100000001b3u;
+    for (size_t k = 0; k < (size_t)W * H; k++) {
+        uint32_t depth_bits;
+        memcpy(&depth_bits, &t->depth[k], sizeof depth_bits);
+        x = (x ^ depth_bits ^ (uint64_t)(uint32_t)t->face[k] << 32) * 0x100000001b3u;
+    }
     if (h->n == h->cap) {
         h->cap = h->cap ? 2 * h->cap : 256;
         h->hash = realloc(h->hash, (size_t)h->cap * sizeof *h->hash);

@@ -25,6 +25,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
@@ -261,19 +262,28 @@ static const Mistake MISTAKES[] = {
 
 /* ---- files ---- */
 
+static double cpu_seconds(const struct rusage *u) /* user and system */
+{
+    return (double)(u->ru_utime.tv_sec + u->ru_stime.tv_sec) +
+           (double)(u->ru_utime.tv_usec + u->ru_stime.tv_usec) / 1e6;
+}
+
 /* run_shell; with TEST_TIMING=1 in the environment it prints how long each
  * command took (where the seconds of this test go). */
 static ShellResult timed_shell(const char *dir, const char *command)
 {
     struct timespec start, end;
+    struct rusage before, after;
     clock_gettime(CLOCK_MONOTONIC, &start);
+    getrusage(RUSAGE_CHILDREN, &before);
     ShellResult r = run_shell(dir, SHELL_TIMEOUT, "%s", command);
     clock_gettime(CLOCK_MONOTONIC, &end);
+    getrusage(RUSAGE_CHILDREN, &after);
     const char *timing = getenv("TEST_TIMING");
     if (timing && strcmp(timing, "1") == 0)
-        print_message("%6.2f s  %.100s\n",
+        print_message("%6.2f s  %6.2f s CPU  %.100s\n",
                       (double)(end.tv_sec - start.tv_sec) + (double)(end.tv_nsec - start.tv_nsec) / 1e9,
-                      command);
+                      cpu_seconds(&after) - cpu_seconds(&before), command);
     return r;
 }
 
