@@ -66,11 +66,10 @@ list() {
 }
 
 # assemble DIR: a lesson's links are made afresh when the list of its files
-# differs from the one they were made from (DIR/<lesson>/.files), so that a
-# make that changes nothing costs one listing, or when its links lead
-# elsewhere (the tree was copied to another depth). The build compiles a
-# lesson's files again when its .files changes (a link that now points
-# elsewhere).
+# differs from the one they were made from (DIR/<lesson>/.files), or when its
+# links lead elsewhere (the tree was copied to another depth). The build
+# compiles a lesson's files again when its .files changes (a link that now
+# points elsewhere). A make that changes nothing costs one find (below).
 assemble() {
     out=$1
     case $out in /*|*..*) usage "assemble wants a directory below the top, not $out" ;; esac
