@@ -68,7 +68,9 @@ float hiz_bound(const Primitive *p, int x0, int y0, int x1, int y1, bool nearest
 bool hiz_skips(HierarchicalZ *h, const DepthSetup *s, int tile, float nearest)
 {
     bool skip = farther(s, nearest, h->far[tile]);
-    h->tiles_tested++, h->tiles_skipped += skip, h->skipped_at[tile] += skip;
+    h->tiles_tested++;
+    if (skip)
+        h->tiles_skipped++, h->skipped_at[tile]++;
     return skip;
 }
 
