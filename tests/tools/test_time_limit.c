@@ -100,7 +100,11 @@ static void cpu_time_limit_stops_computing_not_waiting(void **state)
     char *used = read_text(cpu_out);
     double seconds = strtod(used, NULL);
     free(used);
-    if (!(seconds >= 0.9 && seconds < 3.0))
+    /* About 1 s: not 0, not the 30 s of the wall clock. The kernel stops the
+     * program by its own count of CPU time and getrusage reports another:
+     * on a loaded virtual machine (make test with three jobs on two cores)
+     * they were seen 12% apart, 0.885 s. */
+    if (!(seconds >= 0.5 && seconds < 3.0))
         fail_msg("--cpu-out says %.3f s for a program stopped at 1 s of CPU time", seconds);
 
     const char *sleep_args[] = {"--cpu", "1", "0.5", "sleep", "30", NULL};
