@@ -61,6 +61,13 @@ static void expect_same_pictures(const Pictures *want, const Pictures *got, cons
 {
     assert_int_equal(want->width, got->width);
     assert_int_equal(want->height, got->height);
+    if (want->id.width != want->width || want->id.height != want->height ||
+        got->id.width != got->width || got->id.height != got->height)
+        fail_msg("%s: the --id-out picture is not the size of the --depth-out one", what);
+    size_t n = (size_t)want->width * (size_t)want->height;
+    if (memcmp(want->id.rgb, got->id.rgb, n * IMAGE_CHANNELS) == 0 &&
+        memcmp(want->depth, got->depth, n * sizeof *want->depth) == 0)
+        return; /* the same bytes: the same faces, the same depths to the bit */
     long faces = 0, depths = 0;
     int first_x = -1, first_y = -1;
     for (int y = 0; y < want->height; y++)

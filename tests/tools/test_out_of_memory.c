@@ -2,8 +2,9 @@
  * with one error line and exit status 1, and writes nothing.
  *
  * Lessons 08 to 10 allocate buffers of their own after the target's (the
- * shader's colour and counts, the tile buffer, the bins). Each runs at
- * 4096 x 4096 under a few limits of address space (`ulimit -v`) between
+ * shader's colour and counts, the tile buffer, the bins). Each draws
+ * triangles3 (three faces: the buffers are the cost) at 4096 x 4096 under
+ * a few limits of address space (`ulimit -v`) between
  * what the target needs and what the whole run needs. Whatever the limit,
  * a run either draws its picture and exits 0, or exits 1 with exactly one
  * line "<lesson>: error: ..." and no picture; and for lessons 08 and 09 at
@@ -39,8 +40,8 @@ static int runs_under_limits(const char *lesson, const char *reason)
     int with_reason = 0;
     for (size_t i = 0; i < sizeof LIMITS_MB / sizeof LIMITS_MB[0]; i++) {
         ShellResult r = run_shell(dir, 120,
-                                  "ulimit -v %d && exec %s/%s --width 4096 --height 4096 "
-                                  "--out p.png --id-out id.png >/dev/null",
+                                  "ulimit -v %d && exec %s/%s --scene triangles3 --width 4096 "
+                                  "--height 4096 --out p.png --id-out id.png >/dev/null",
                                   LIMITS_MB[i] * 1024, bin, lesson);
         bool picture = access(path_join(dir, "p.png"), F_OK) == 0 ||
                        access(path_join(dir, "id.png"), F_OK) == 0;
