@@ -141,13 +141,13 @@ make -s BUILD="$build" "$build/bin/08_early_z"
 l08="$build/bin/08_early_z"
 for pair in late:late:none early:early:none sorted:early:front-to-back prepass:prepass:none; do
     rest=${pair#*:}
-    "$l08" --z-mode "${rest%%:*}" --sort "${rest#*:}" --out "$build/08.png" \
+    "$l08" --z-mode "${rest%%:*}" --sort "${rest#*:}" --out "$tmp_out" \
            --shade-count-out "$images/08_heat_${pair%%:*}.png" >/dev/null
 done
-"$l08" --out "$build/08.png" --colour-out "$images/08_crowd.png" >/dev/null
+"$l08" --out "$tmp_out" --colour-out "$images/08_crowd.png" >/dev/null
 for bug in "" early-z-with-discard; do # close behind the first fence
     "$l08" --width 400 --height 300 --eye 0,0.8,-5 --target 0,0.6,-12 ${bug:+--bug "$bug"} \
-           --out "$build/08.png" --colour-out "$images/08_fence${bug:+_bug}.png" >/dev/null
+           --out "$tmp_out" --colour-out "$images/08_fence${bug:+_bug}.png" >/dev/null
 done
 echo "make-doc-images: 08_early_z done"
 
@@ -157,11 +157,11 @@ echo "make-doc-images: 08_early_z done"
 # are neither tested nor shaded).
 make -s BUILD="$build" "$build/bin/09_hierarchical_z"
 l09="$build/bin/09_hierarchical_z"
-"$l09" --out "$build/09.png" --hiz-out "$images/09_tiles.png" \
+"$l09" --out "$tmp_out" --hiz-out "$images/09_tiles.png" \
        --skip-out "$images/09_skips.png" --world-out "$images/09_world.png" >/dev/null
-"$l08" --scene city --z-mode late --out "$build/08.png" \
+"$l08" --scene city --z-mode late --out "$tmp_out" \
        --shade-count-out "$images/09_heat_08.png" >/dev/null
-"$l09" --z-mode late --out "$build/09.png" --shade-count-out "$images/09_heat_09.png" >/dev/null
+"$l09" --z-mode late --out "$tmp_out" --shade-count-out "$images/09_heat_09.png" >/dev/null
 echo "make-doc-images: 09_hierarchical_z done"
 
 # ---- Diagrams drawn by code (tools/diagrams.c): lesson 02's edge functions
