@@ -579,6 +579,13 @@ int compare_strings(const void *a, const void *b)
     return strcmp((const char *)a, (const char *)b);
 }
 
+double seconds_since(const struct timespec *start)
+{
+    struct timespec now;
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    return (double)(now.tv_sec - start->tv_sec) + (double)(now.tv_nsec - start->tv_nsec) / 1e9;
+}
+
 void expect_default_world_view(const char *program, const char *expected)
 {
     char name[128];

@@ -29,6 +29,7 @@
 #define TEST_SUPPORT_H
 
 #include <stdbool.h>
+#include <time.h>
 
 #include "expect.h"
 #include "harness/image_io.h"
@@ -112,6 +113,9 @@ void expect_line(const char *out, const char *line);
 
 /* strcmp for qsort over an array of fixed-size char arrays. */
 int compare_strings(const void *a, const void *b);
+
+/* Seconds from start (taken with clock_gettime(CLOCK_MONOTONIC)) to now. */
+double seconds_since(const struct timespec *start);
 
 /* From tests/support/test_hooks.c: UPDATE_EXPECTED=1 as it was when the
  * program started (never while grading), and whether make grade runs it. */

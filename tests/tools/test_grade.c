@@ -56,8 +56,8 @@ static const char MAIN_C[] = "#include \"fake.h\"\nint main(void) { return fake_
  * hangs spins as a student's endless loop does, in four threads at once:
  * the kernel counts their CPU time together, so that its 1 s of CPU time
  * comes well within the 3 s of wall-clock time on a machine as busy as
- * make sanitize keeps it (one thread at nice 19 can starve there, and
- * the wall clock stop it first). */
+ * make sanitize keeps it (one thread at nice 19 can starve there and be
+ * stopped by the wall clock first). */
 static const char TEST_FAKE_C[] =
     "#include <setjmp.h>\n#include <stdarg.h>\n#include <stddef.h>\n#include <stdint.h>\n"
     "#include <cmocka.h>\n#include <pthread.h>\n#include <signal.h>\n#include <stdlib.h>\n"
@@ -641,17 +641,16 @@ static Graded autograde(const char *name, const char *const *files)
         shell_result_free(&r);
         write_text(path, files[i + 1]);
     }
-    struct timespec t0, t1;
+    struct timespec t0;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     r = run_shell(dir, SHELL_TIMEOUT,
                   "AUTOGRADER_ROOT=%s AUTOGRADER_SUBMISSION=%s/submission "
                   "AUTOGRADER_RESULTS=%s/results/results.json AUTOGRADER_USERS='" TEST_USERS "' "
                   "AUTOGRADER_TIME_LIMIT=1 AUTOGRADER_TOTAL_LIMIT=60 sh %s/source/run_autograder",
                   image, dir, dir, image);
-    clock_gettime(CLOCK_MONOTONIC, &t1);
     Graded g;
     snprintf(g.dir, sizeof g.dir, "%s", dir);
-    g.seconds = (double)(t1.tv_sec - t0.tv_sec) + (double)(t1.tv_nsec - t0.tv_nsec) / 1e9;
+    g.seconds = seconds_since(&t0);
     if (r.status != 0)
         fail_msg("run_autograder (%s): status %d\n%s", name, r.status, r.output);
     shell_result_free(&r);
@@ -796,10 +795,7 @@ static void autograder_cannot_be_forged_and_takes_any_shape(void **state)
     shell_result_free(&after);
     /* The attacker's process, had it lived, would have written by now: 5 s
      * after its grading ended (the submissions after it took some of them). */
-    struct timespec now;
-    clock_gettime(CLOCK_MONOTONIC, &now);
-    double left = 5.0 - ((double)(now.tv_sec - attacked_at.tv_sec) +
-                         1e-9 * (double)(now.tv_nsec - attacked_at.tv_nsec));
+    double left = 5.0 - seconds_since(&attacked_at);
     if (left > 0) {
         struct timespec pause = {(time_t)left, (long)((left - (double)(time_t)left) * 1e9)};
         nanosleep(&pause, NULL);

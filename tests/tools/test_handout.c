@@ -273,18 +273,17 @@ static double cpu_seconds(const struct rusage *u) /* user and system */
  * command took and the CPU time it used (where the seconds of this test go). */
 static ShellResult timed_shell(const char *dir, const char *command)
 {
-    struct timespec start, end;
+    struct timespec start;
     struct rusage before, after;
     clock_gettime(CLOCK_MONOTONIC, &start);
     getrusage(RUSAGE_CHILDREN, &before);
     ShellResult r = run_shell(dir, SHELL_TIMEOUT, "%s", command);
-    clock_gettime(CLOCK_MONOTONIC, &end);
+    double took = seconds_since(&start);
     getrusage(RUSAGE_CHILDREN, &after);
     const char *timing = getenv("TEST_TIMING");
     if (timing && strcmp(timing, "1") == 0)
         print_message("%6.2f s  %6.2f s CPU  %.100s\n",
-                      (double)(end.tv_sec - start.tv_sec) + (double)(end.tv_nsec - start.tv_nsec) / 1e9,
-                      cpu_seconds(&after) - cpu_seconds(&before), command);
+                      took, cpu_seconds(&after) - cpu_seconds(&before), command);
     return r;
 }
 

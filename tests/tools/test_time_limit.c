@@ -15,13 +15,6 @@
 
 #include "test_support.h"
 
-static double seconds_since(const struct timespec *start)
-{
-    struct timespec now;
-    clock_gettime(CLOCK_MONOTONIC, &now);
-    return (double)(now.tv_sec - start->tv_sec) + (double)(now.tv_nsec - start->tv_nsec) / 1e9;
-}
-
 static void program_in_time_keeps_its_status_and_output(void **state)
 {
     (void)state;
