@@ -1,8 +1,8 @@
 /* test_program.c: build/bin/10_fast_raster run end to end. Its pictures are
  * lesson 09's, exactly: the face of every pixel (--id-out) and its depth
- * (--depth-out, the same float bits) on every built-in scene, with every
- * --simd this machine runs (and pixels, without blocks) and 1, 2 and 3
- * threads; lesson 07's in the other depth formats and mappings, with a
+ * (--depth-out, the same float bits) on every built-in scene at 400 x 300,
+ * with every --simd this machine runs (and pixels, without blocks) and 1, 2
+ * and 3 threads; lesson 07's in the other depth formats and mappings, with a
  * polygon offset, and with a far plane that cuts the scene; the fragments
  * it counts when asked to count (lesson 08's: no block skipped); bad input. */
 #include <setjmp.h>
@@ -99,20 +99,24 @@ static bool machine_runs(const char *simd)
  * when they run in one process (make test; make grade runs each alone). */
 static Pictures lesson_09[NSCENES];
 
-/* Every scene, lesson 09's picture, against --simd simd with 1, 2, 3 threads. */
+/* Every scene, lesson 09's picture, against --simd simd with 1, 2, 3 threads;
+ * at 400 x 300, as below (35 tiles of 64 x 64, the last row and column cut:
+ * enough for three threads, at a quarter of the default's pixels). */
 static void expect_every_scene_like_lesson_09(const char *simd)
 {
     if (!machine_runs(simd))
         skip();
+    const char *size[] = {"--width", "400", "--height", "300", NULL};
     for (int s = 0; s < NSCENES; s++) {
         if (!lesson_09[s].depth)
-            lesson_09[s] = draw("09_hierarchical_z", SCENES[s], NULL);
+            lesson_09[s] = draw("09_hierarchical_z", SCENES[s], size);
         const Pictures want = lesson_09[s];
         for (int threads = 1; threads <= 3; threads++) {
             char n[8], what[96];
             snprintf(n, sizeof n, "%d", threads);
             snprintf(what, sizeof what, "scene %s, --simd %s, --threads %d", SCENES[s], simd, threads);
-            const char *args[] = {"--simd", simd, "--threads", n, NULL};
+            const char *args[] = {"--simd", simd, "--threads", n, "--width", "400", "--height", "300",
+                                  NULL};
             Pictures got = draw(PROGRAM, SCENES[s], args);
             expect_same_pictures(&want, &got, what);
             pictures_free(&got);
@@ -193,12 +197,14 @@ static void a_far_plane_through_a_face_draws_lesson_09s_picture(void **state)
     pictures_free(&got);
 }
 
-/* The summary's "fragments: N tested, P passed, F failed" line, up to ';'. */
+/* The summary's "fragments: N tested, P passed, F failed" line, up to ';';
+ * at 400 x 300, as above. */
 static char *fragments_line(const char *program, const char *scene, const char *const *more)
 {
     const char *args[MAX_ARGS] = {"--scene", scene, "--out",
-                                  path_join(test_dir("l10_counts"), "x.png")};
-    int n = 4;
+                                  path_join(test_dir("l10_counts"), "x.png"), "--width", "400",
+                                  "--height", "300"};
+    int n = 8;
     for (int k = 0; more && more[k]; k++)
         args[n++] = more[k];
     args[n] = NULL;
