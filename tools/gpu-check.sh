@@ -9,6 +9,8 @@
 #               the GPU given the lessons' corners snapped to 1/256 pixel
 #               (--snap): the difference the snapping makes, set apart
 # The GPU's depth is float32, reversed, far at infinity: the most exact it has.
+# It draws each scene twice, as it is and --snap, and each drawing is compared
+# with all three lessons' pictures (--agree-id and --agree-depth take lists).
 # Lessons 03 and 04 drop faces with a corner at or behind the near plane,
 # which the GPU clips: their rows for such scenes say so instead.
 #
@@ -23,52 +25,71 @@ scenes=$*
 [ -n "$scenes" ] ||
     scenes=$("$bin/05_clipping" --help | sed -n '/^Scenes:/,/^$/p' | awk 'NR > 1 && NF { print $1 }')
 
-# The numbers of one gpu_reference run: covered, same-face %, differing, depth.
-numbers() {
-    awk '/agreement:/ { covered = $2; pct = $10; differ = $11 }
-         /^  depth:/ { rel = $5 }
+# The numbers of the k-th lesson in one gpu_reference run: covered,
+# same-face %, differing, depth.
+numbers() { # file k
+    awk -v k="$2" '/agreement:/ && ++a == k { covered = $2; pct = $10; differ = $11 }
+         /^  depth:/ && ++d == k { rel = $5 }
          END { gsub(/[(),%]/, "", pct); print covered, pct, differ, rel }' "$1"
 }
 
-# One row of the table: lesson on scene, in a directory of its own.
-row() { # lesson scene dir
-    "$bin/$1" --scene "$2" --out "$3/p.png" --id-out "$3/id.png" \
-        --depth-out "$3/d.pfm" >"$3/lesson.txt"
-    dropped=$(sed -n 's/.* \([0-9][0-9]*\) dropped at the near plane.*/\1/p' "$3/lesson.txt")
-    if [ "$1" != 05_clipping ] && [ "${dropped:-0}" -gt 0 ]; then
-        printf '%-22s %-15s (drops %s triangles at the near plane: not compared)\n' \
-            "$1" "$2" "$dropped"
-        return 0
-    fi
+lessons="03_perspective_z 04_scanline_inverse_z 05_clipping"
+
+# One scene, in a directory of its own: each lesson's pictures, then the GPU
+# twice (as it is, and --snap), each run comparing every lesson that draws
+# the scene whole; one row per lesson into dir/<lesson>.row.
+scene_rows() { # scene dir
+    scene=$1 dir=$2 ids="" depths="" compared=""
+    for lesson in $lessons; do
+        mkdir -p "$dir/$lesson"
+        "$bin/$lesson" --scene "$scene" --out "$dir/$lesson/p.png" --id-out "$dir/$lesson/id.png" \
+            --depth-out "$dir/$lesson/d.pfm" >"$dir/$lesson/lesson.txt"
+        dropped=$(sed -n 's/.* \([0-9][0-9]*\) dropped at the near plane.*/\1/p' "$dir/$lesson/lesson.txt")
+        if [ "$lesson" != 05_clipping ] && [ "${dropped:-0}" -gt 0 ]; then
+            printf '%-22s %-15s (drops %s triangles at the near plane: not compared)\n' \
+                "$lesson" "$scene" "$dropped" >"$dir/$lesson.row"
+            continue
+        fi
+        compared="$compared $lesson"
+        ids="$ids${ids:+,}$dir/$lesson/id.png"
+        depths="$depths${depths:+,}$dir/$lesson/d.pfm"
+    done
     for snap in "" --snap; do
         # shellcheck disable=SC2086 # $snap is one flag or none
-        "$gpu" --scene "$2" --depth-format float32 --depth-mapping reversed --far inf \
-            $snap --agree-id "$3/id.png" --agree-depth "$3/d.pfm" >"$3/gpu$snap.txt"
+        "$gpu" --scene "$scene" --depth-format float32 --depth-mapping reversed --far inf \
+            $snap --agree-id "$ids" --agree-depth "$depths" >"$dir/gpu$snap.txt"
     done
-    # shellcheck disable=SC2046 # one word per number
-    set -- "$1" "$2" $(numbers "$3/gpu.txt") $(numbers "$3/gpu--snap.txt")
-    printf '%-22s %-15s %9s %9s%% %7s %11s %11s\n' "$1" "$2" "$3" "$4" "$5" "$6" "${10}"
+    k=0
+    for lesson in $compared; do
+        k=$((k + 1))
+        # shellcheck disable=SC2046 # one word per number
+        set -- $(numbers "$dir/gpu.txt" "$k") $(numbers "$dir/gpu--snap.txt" "$k")
+        printf '%-22s %-15s %9s %9s%% %7s %11s %11s\n' "$lesson" "$scene" "$1" "$2" "$3" "$4" "$8" \
+            >"$dir/$lesson.row"
+    done
 }
 
-# The rows run side by side, as many at once as there are cores, each
-# into a file of its own, with .ok beside it when it worked (set -e ends
-# the job at its first failure); then they are printed in order.
+# The scenes run side by side, as many at once as there are cores, each
+# into a directory of its own, with .ok beside it when it worked (set -e
+# ends the job at its first failure); then the rows are printed, lesson by
+# lesson, each scene in order.
 cores=$(nproc 2>/dev/null || echo 1)
 n=0
-for lesson in 03_perspective_z 04_scanline_inverse_z 05_clipping; do
-    for scene in $scenes; do
-        n=$((n + 1))
-        job=$work/$(printf %04d "$n")
-        mkdir -p "$job"
-        { row "$lesson" "$scene" "$job" >"$job.row"; : >"$job.ok"; } & # set -e ends it at a failure
-        [ $((n % cores)) -ne 0 ] || wait
-    done
+for scene in $scenes; do
+    n=$((n + 1))
+    job=$work/$(printf %04d "$n")
+    mkdir -p "$job"
+    { scene_rows "$scene" "$job"; : >"$job.ok"; } & # set -e ends it at a failure
+    [ $((n % cores)) -ne 0 ] || wait
 done
 wait
+for k in $(seq 1 "$n"); do
+    [ -f "$work/$(printf %04d "$k").ok" ] || { echo "gpu-check: a run failed" >&2; exit 1; }
+done
 printf '%-22s %-15s %9s %10s %7s %11s %11s\n' lesson scene covered "same face" differ \
     "depth" "depth snap"
-for k in $(seq 1 "$n"); do
-    job=$work/$(printf %04d "$k")
-    cat "$job.row"
-    [ -f "$job.ok" ] || { echo "gpu-check: a run failed (above)" >&2; exit 1; }
+for lesson in $lessons; do
+    for k in $(seq 1 "$n"); do
+        cat "$work/$(printf %04d "$k")/$lesson.row"
+    done
 done

@@ -32,7 +32,9 @@
  * the other ways (gl.h).
  *
  * --agree-id and --agree-depth compare a lesson's --id-out and --depth-out
- * with the GPU's pictures and print the agreement; --snap first moves each
+ * with the GPU's pictures and print the agreement (several lessons' at once:
+ * files separated by commas, the k-th depth file with the k-th picture,
+ * each agreement after a line naming its picture); --snap first moves each
  * corner onto the lessons' 1/256-pixel grid (docs/tools.md says why).
  * --polygon-offset and --offset-clamp: lesson 07's depth bias, on the faces in
  * group or object `decal`: glPolygonOffset (glPolygonOffsetClamp) with
@@ -74,10 +76,11 @@ static const LessonFlag FLAGS[N_FLAGS] = {
                    "move each corner to the lessons' 1/256-pixel grid before the GPU sets up "
                    "depth: its planes then start from the lessons' snapped corners"},
     [FLAG_AGREE_ID] = {"--agree-id", "FILE.png",
-                       "a lesson's --id-out: print how many covered pixels show the same face"},
+                       "a lesson's --id-out: print how many covered pixels show the same face "
+                       "(several: separated by commas)"},
     [FLAG_AGREE_DEPTH] = {"--agree-depth", "FILE.pfm",
                           "a lesson's --depth-out: the largest relative depth difference where "
-                          "both show the same face (with --agree-id)"},
+                          "both show the same face (with --agree-id; one per picture)"},
     [FLAG_OFFSET] = {"--polygon-offset", "FACTOR,UNITS",
                      "glPolygonOffset(FACTOR, UNITS) on the faces in group or object `decal`"},
     [FLAG_CLAMP] = {"--offset-clamp", "C",
@@ -90,6 +93,33 @@ typedef struct {
     long repeat;
     double factor, units, clamp; /* --polygon-offset, --offset-clamp */
 } GpuOptions;
+
+/* How many files a comma-separated list names. */
+static int count_items(const char *list)
+{
+    int n = 1;
+    for (const char *c = list; *c; c++)
+        n += *c == ',';
+    return n;
+}
+
+/* The k-th file (from 0) of a comma-separated list, into buf: false past
+ * the end, or when it does not fit (err set). */
+static bool list_item(const char *list, int k, char *buf, size_t size, Error *err)
+{
+    for (; k > 0 && list; k--) {
+        list = strchr(list, ',');
+        list = list ? list + 1 : NULL;
+    }
+    if (!list)
+        return false;
+    size_t n = strcspn(list, ",");
+    if (n >= size)
+        return error_set(err, "a file name of %zu characters: at most %zu", n, size - 1);
+    memcpy(buf, list, n);
+    buf[n] = '\0';
+    return true;
+}
 
 /* One of names[0 .. n-1], by name: its index, or -1 with err set. */
 static int pick(const char *flag, const char *value, const char *const *names, int n,
@@ -139,6 +169,10 @@ static bool read_gpu_options(const Options *o, GpuOptions *g, Error *err)
     if (x[FLAG_AGREE_DEPTH] && !x[FLAG_AGREE_ID])
         return error_set(err, "--agree-depth needs --agree-id (depths are compared where the "
                               "faces agree)");
+    if (x[FLAG_AGREE_DEPTH] && count_items(x[FLAG_AGREE_DEPTH]) != count_items(x[FLAG_AGREE_ID]))
+        return error_set(err, "--agree-depth and --agree-id name different numbers of files "
+                              "(%d and %d): one depth file per picture",
+                         count_items(x[FLAG_AGREE_DEPTH]), count_items(x[FLAG_AGREE_ID]));
     if (g->far_inf && g->setup.mapping != MAP_REVERSED)
         return error_set(err, "--far inf needs --depth-mapping reversed (the standard mapping "
                               "puts the far plane at 1)");
@@ -427,12 +461,21 @@ static int draw_and_write(const Options *o, const GpuOptions *g, Render *r, Erro
             if (g->repeat > 1)
                 printf("  draw: %.6f s (fastest of %ld, glFinish included)\n", seconds,
                        g->repeat);
-            Agreement a = {0};
-            const char *id = o->extra[FLAG_AGREE_ID], *dp = o->extra[FLAG_AGREE_DEPTH];
-            if (id && !agree(r, id, dp, face, depth, o->width, o->height, &a, err))
-                status = EXIT_RUN_FAILED;
-            else if (id)
-                print_agreement(&a, dp != NULL);
+            const char *ids = o->extra[FLAG_AGREE_ID], *dps = o->extra[FLAG_AGREE_DEPTH];
+            int n = ids ? count_items(ids) : 0;
+            for (int k = 0; k < n && status == EXIT_OK; k++) {
+                char id[4096], dp[4096];
+                Agreement a = {0};
+                if (!list_item(ids, k, id, sizeof id, err) ||
+                    (dps && !list_item(dps, k, dp, sizeof dp, err)) ||
+                    !agree(r, id, dps ? dp : NULL, face, depth, o->width, o->height, &a, err)) {
+                    status = EXIT_RUN_FAILED;
+                    break;
+                }
+                if (n > 1)
+                    printf("  with %s:\n", id);
+                print_agreement(&a, dps != NULL);
+            }
         } else {
             output_set_abort();
         }

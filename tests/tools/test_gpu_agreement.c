@@ -453,6 +453,49 @@ static void gpu_reference_refuses_bad_flags(void **state)
     expect_count(2, r.status, "gpu_reference --offset-clamp without --polygon-offset");
     expect_line(r.err, "gpu_reference: error: --offset-clamp needs --polygon-offset\n");
     run_result_free(&r);
+    const char *lists[] = {"--agree-id", "a.png,b.png", "--agree-depth", "a.pfm", NULL};
+    r = run_tool(GPU, lists);
+    expect_count(2, r.status, "gpu_reference with two pictures and one depth file");
+    expect_line(r.err, "gpu_reference: error: --agree-depth and --agree-id name different "
+                       "numbers of files (1 and 2): one depth file per picture\n");
+    run_result_free(&r);
+}
+
+/* --agree-id and --agree-depth take several lessons' pictures (make gpu-check
+ * compares three with one drawing): the agreement of each, after a line
+ * naming it, is what the same files give alone. */
+static void gpu_reference_compares_several_pictures_in_turn(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("gpu_several");
+    Path id = in_dir(dir, "id.png"), depth = in_dir(dir, "d.pfm"), out = in_dir(dir, "p.png");
+    const char *size[] = {"--scene", "cubes", "--width", "96", "--height", "72"};
+    const char *largs[] = {size[0], size[1], size[2], size[3], size[4], size[5], "--out", out.path,
+                           "--id-out", id.path, "--depth-out", depth.path, NULL};
+    free(run_ok("05_clipping", largs));
+    const char *one[] = {size[0], size[1], size[2], size[3], size[4], size[5], "--agree-id",
+                         id.path, "--agree-depth", depth.path, NULL};
+    RunResult alone = run_tool(GPU, one);
+    expect_count(0, alone.status, "gpu_reference with one picture: exit status");
+    char ids[2 * TEST_PATH_MAX + 2], depths[2 * TEST_PATH_MAX + 2];
+    snprintf(ids, sizeof ids, "%s,%s", id.path, id.path);
+    snprintf(depths, sizeof depths, "%s,%s", depth.path, depth.path);
+    const char *two[] = {size[0], size[1], size[2], size[3], size[4], size[5], "--agree-id",
+                         ids, "--agree-depth", depths, NULL};
+    RunResult both = run_tool(GPU, two);
+    expect_count(0, both.status, "gpu_reference with two pictures: exit status");
+    const char *block = strstr(alone.out, "  agreement:");
+    if (!block)
+        fail_msg("no agreement line in:\n%s", alone.out);
+    char with[TEST_PATH_MAX + 16], want[2 * (TEST_PATH_MAX + 16) + 4096];
+    snprintf(with, sizeof with, "  with %s:\n", id.path);
+    snprintf(want, sizeof want, "%s%s%s%s", with, block, with, block);
+    const char *got = strstr(both.out, with);
+    if (!got || strcmp(got, want) != 0)
+        fail_msg("two pictures should give, after the first line:\n%s\ngot:\n%s", want,
+                 both.out);
+    run_result_free(&alone);
+    run_result_free(&both);
 }
 
 int main(void)
@@ -463,6 +506,7 @@ int main(void)
         cmocka_unit_test(lessons_agree_with_the_gpu),
         cmocka_unit_test(decals_agree_with_the_gpu_under_polygon_offset),
         cmocka_unit_test(gpu_reference_refuses_bad_flags),
+        cmocka_unit_test(gpu_reference_compares_several_pictures_in_turn),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
