@@ -22,6 +22,10 @@
 #define PROGRAM "10_fast_raster"
 #define NSCENES 11
 #define MAX_ARGS 24
+/* The size the comparisons draw at: 35 tiles of 64 x 64 (the last row and
+ * column cut), enough for three threads, at a quarter of the default's
+ * pixels, so that each test keeps within make grade's time per test. */
+#define SIZE "--width", "400", "--height", "300"
 
 static const char *const SCENES[NSCENES] = {"triangles3", "interpenetrate", "cubes", "grazing",
                                             "walls", "knot", "inside", "ladder", "decals",
@@ -99,14 +103,12 @@ static bool machine_runs(const char *simd)
  * when they run in one process (make test; make grade runs each alone). */
 static Pictures lesson_09[NSCENES];
 
-/* Every scene, lesson 09's picture, against --simd simd with 1, 2, 3 threads;
- * at 400 x 300, as below (35 tiles of 64 x 64, the last row and column cut:
- * enough for three threads, at a quarter of the default's pixels). */
+/* Every scene, lesson 09's picture, against --simd simd with 1, 2, 3 threads. */
 static void expect_every_scene_like_lesson_09(const char *simd)
 {
     if (!machine_runs(simd))
         skip();
-    const char *size[] = {"--width", "400", "--height", "300", NULL};
+    const char *size[] = {SIZE, NULL};
     for (int s = 0; s < NSCENES; s++) {
         if (!lesson_09[s].depth)
             lesson_09[s] = draw("09_hierarchical_z", SCENES[s], size);
@@ -115,8 +117,7 @@ static void expect_every_scene_like_lesson_09(const char *simd)
             char n[8], what[96];
             snprintf(n, sizeof n, "%d", threads);
             snprintf(what, sizeof what, "scene %s, --simd %s, --threads %d", SCENES[s], simd, threads);
-            const char *args[] = {"--simd", simd, "--threads", n, "--width", "400", "--height", "300",
-                                  NULL};
+            const char *args[] = {"--simd", simd, "--threads", n, SIZE, NULL};
             Pictures got = draw(PROGRAM, SCENES[s], args);
             expect_same_pictures(&want, &got, what);
             pictures_free(&got);
@@ -150,8 +151,7 @@ static void avx2_draws_lesson_09s_pictures(void **state)
 
 /* Lesson 07 has no cutouts (crowd's fences): every other scene, in the
  * depth buffers lesson 08 does not offer, and where --far 12 cuts walls and
- * inside (lesson 05 clips them: no fragment lies beyond the far plane); at
- * 400 x 300, so that the test keeps within make grade's time per test. */
+ * inside (lesson 05 clips them: no fragment lies beyond the far plane). */
 static void other_depth_buffers_draw_lesson_07s_pictures(void **state)
 {
     (void)state;
@@ -166,7 +166,7 @@ static void other_depth_buffers_draw_lesson_07s_pictures(void **state)
         for (int s = 0; s < NSCENES; s++) {
             if (strcmp(SCENES[s], "crowd") == 0)
                 continue;
-            const char *args[MAX_ARGS] = {"--threads", "3", "--width", "400", "--height", "300"};
+            const char *args[MAX_ARGS] = {"--threads", "3", SIZE};
             int n = 6;
             for (int j = 0; SETUPS[k][j]; j++)
                 args[n++] = SETUPS[k][j];
@@ -189,7 +189,7 @@ static void other_depth_buffers_draw_lesson_07s_pictures(void **state)
 static void a_far_plane_through_a_face_draws_lesson_09s_picture(void **state)
 {
     (void)state;
-    const char *args[] = {"--far", "8", "--width", "400", "--height", "300", NULL};
+    const char *args[] = {"--far", "8", SIZE, NULL};
     Pictures want = draw("09_hierarchical_z", "decals", args);
     Pictures got = draw(PROGRAM, "decals", args);
     expect_same_pictures(&want, &got, "scene decals with --far 8");
@@ -197,13 +197,11 @@ static void a_far_plane_through_a_face_draws_lesson_09s_picture(void **state)
     pictures_free(&got);
 }
 
-/* The summary's "fragments: N tested, P passed, F failed" line, up to ';';
- * at 400 x 300, as above. */
+/* The summary's "fragments: N tested, P passed, F failed" line, up to ';'. */
 static char *fragments_line(const char *program, const char *scene, const char *const *more)
 {
     const char *args[MAX_ARGS] = {"--scene", scene, "--out",
-                                  path_join(test_dir("l10_counts"), "x.png"), "--width", "400",
-                                  "--height", "300"};
+                                  path_join(test_dir("l10_counts"), "x.png"), SIZE};
     int n = 8;
     for (int k = 0; more && more[k]; k++)
         args[n++] = more[k];

@@ -463,7 +463,7 @@ static int draw_and_write(const Options *o, const GpuOptions *g, Render *r, Erro
                        g->repeat);
             const char *ids = o->extra[FLAG_AGREE_ID], *dps = o->extra[FLAG_AGREE_DEPTH];
             int n = ids ? count_items(ids) : 0;
-            for (int k = 0; k < n && status == EXIT_OK; k++) {
+            for (int k = 0; k < n; k++) {
                 char id[4096], dp[4096];
                 Agreement a = {0};
                 if (!list_item(ids, k, id, sizeof id, err) ||
