@@ -151,19 +151,30 @@ esac
 # The lessons after this one (LATER=absent, the default): out, with their
 # tests, pages, pictures and diffs. They build on this lesson's work: its
 # answers are in their code.
-number_of() { n=${1%%_*}; echo "${n#0}"; }
+# (In the shell alone, no process per lesson: number_of 03_perspective_z sets
+# num=3, and ${other%"${other#??}"} is its first two characters, 03.)
+number_of() { num=${1%%_*}; num=${num#0}; }
+number_of "$name"
+this=$num
+# leave_out TEST...: the files and directories under the handout's tests/ and
+# docs/ that find's TEST picks, removed; one find for both.
+leave_out() {
+    n=$#
+    for top in "$tmp/docs" "$tmp/tests"; do
+        if [ -d "$top" ]; then set -- "$top" "$@"; fi
+    done
+    [ $# -eq "$n" ] || find "$@" -prune -exec rm -rf {} +
+}
 if [ "$later" = absent ]; then
     for d in lessons/*; do
         [ -d "$d" ] || continue
         other=${d#lessons/}
-        [ "$(number_of "$other")" -gt "$(number_of "$name")" ] 2>/dev/null || continue
+        number_of "$other"
+        [ "$num" -gt "$this" ] 2>/dev/null || continue
         rm -rf "${tmp:?}/$d"
-        for top in "$tmp/tests" "$tmp/docs"; do
-            [ -d "$top" ] || continue
-            find "$top" \( -name "*$other*" -o -name "$(echo "$other" | cut -c1-2)_*" \
-                -o -name "*_$(echo "$other" | cut -c1-2).*" \) \
-                -prune -exec rm -rf {} + || die "cannot leave out $other"
-        done
+        two=${other%"${other#??}"}
+        leave_out \( -name "*$other*" -o -name "${two}_*" -o -name "*_$two.*" \) ||
+            die "cannot leave out $other"
     done
 fi
 
@@ -217,11 +228,8 @@ if [ "$only" -eq 1 ]; then
                    rm -rf "${tmp:?}/$d"
                fi ;;
         esac
-        for top in "$tmp/tests" "$tmp/docs"; do
-            [ -d "$top" ] || continue
-            find "$top" \( -name "*$other*" -o -name "$(echo "$other" | cut -c1-2)_*" \) \
-                -prune -exec rm -rf {} + || die "cannot leave out $other"
-        done
+        two=${other%"${other#??}"}
+        leave_out \( -name "*$other*" -o -name "${two}_*" \) || die "cannot leave out $other"
     done
 fi
 
