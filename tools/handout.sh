@@ -186,6 +186,7 @@ if [ "$earlier" = stubbed ]; then
         [ -d "$d" ] || continue
         other=${d#lessons/}
         [ "$other" = "$name" ] && continue
+        [ -d "$tmp/$d" ] || continue # a later lesson, left out: nothing of it to write
         for f in $(find "$d" -type f | sort) docs/"$other".md; do
             [ -f "$f" ] && grep -Eq 'SOLUTION (BEGIN|STUB|END)' "$f" || continue
             awk -v mode=strip -f "$awk_regions" "$f" >"$tmp/$f" || die "cannot write the handout of $f"

@@ -463,6 +463,37 @@ static void handout_replaces_the_region_by_stub_and_hint(void **state)
     shell_result_free(&r);
 }
 
+/* EARLIER=stubbed: the earlier lessons' regions are taken out too; a later
+ * lesson, left out as usual, is not written back (with it a handout of any
+ * lesson but the last failed), and kept (LATER=solved) it is stubbed too. */
+static void handout_stubs_the_other_lessons_when_asked(void **state)
+{
+    (void)state;
+    const char *dest = abs_test_dir("grade_stubbed");
+    ShellResult r = shell_ok(tree, "sh tools/handout.sh --earlier stubbed --dest %s/h 06", dest);
+    shell_result_free(&r);
+    const char *h = path_join(dest, "h");
+    assert_false(file_exists(path_join(h, "lessons/09_fake"))); /* later: out */
+    assert_false(file_exists(path_join(h, "tests/09_fake")));
+    char *sum = read_text(path_join(h, "lessons/06_sum/sum.c"));
+    assert_non_null(strstr(sum, "TODO(student)"));
+    free(sum);
+
+    r = shell_ok(tree, "sh tools/handout.sh --earlier stubbed --dest %s/h 09", dest);
+    shell_result_free(&r);
+    sum = read_text(path_join(h, "lessons/06_sum/sum.c")); /* earlier: stubbed */
+    if (!strstr(sum, "TODO(student)") || strstr(sum, "n * (n + 1)"))
+        fail_msg("the earlier lesson's region should be stubbed:\n%s", sum);
+    free(sum);
+
+    r = shell_ok(tree, "sh tools/handout.sh --earlier stubbed --later solved --dest %s/h 06", dest);
+    shell_result_free(&r);
+    char *fake = read_text(path_join(h, "lessons/09_fake/fake.c")); /* later, kept: stubbed */
+    if (!strstr(fake, "TODO(student)") || strstr(fake, "a + b"))
+        fail_msg("the later lesson, kept, should be stubbed too:\n%s", fake);
+    free(fake);
+}
+
 /* What must stop the handout, and the message that says why. Nothing is
  * written: neither DEST nor a temporary tree beside it. */
 static void expect_refused_handout(const char *lesson, int status, const char *message)
@@ -862,6 +893,7 @@ int main(void)
         cmocka_unit_test_teardown(one_test_alone_sets_the_exit_status, restore_tree),
         cmocka_unit_test_teardown(malformed_points_file_is_refused_with_its_line, restore_tree),
         cmocka_unit_test_teardown(handout_replaces_the_region_by_stub_and_hint, restore_tree),
+        cmocka_unit_test_teardown(handout_stubs_the_other_lessons_when_asked, restore_tree),
         cmocka_unit_test_teardown(handout_refuses_a_tree_that_gives_a_solution_line_away, restore_tree),
         cmocka_unit_test_teardown(handout_refuses_malformed_markers, restore_tree),
         cmocka_unit_test_teardown(handout_refuses_bad_requests, restore_tree),
