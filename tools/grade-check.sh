@@ -20,7 +20,9 @@
 #   5. every lesson's solution judged while another process keeps every core
 #      busy, as many tests at a time as there are cores: full marks;
 #   6. the default handout of the last lesson (every earlier lesson solved,
-#      the last stubbed) builds.
+#      the last stubbed) builds;
+#   7. the handout of the last lesson with EARLIER=stubbed (every lesson
+#      stubbed), graded as a student grades it: every lesson scores 0.
 # Prints a table and exits 1 if any of these does not hold, or the records
 # cannot be made.
 set -u
@@ -198,6 +200,32 @@ if sh tools/handout.sh --dest "$h" "$last" >"$work/handout.log" 2>&1 &&
 else
     tail -n 20 "$work/handout.log" >&2
     echo "$prog: error: the default handout of $last does not build (above)" >&2
+    status=1
+fi
+
+# 7. The handout of the last lesson with the earlier ones stubbed too
+# (EARLIER=stubbed): every lesson's work taken out at once, built as make
+# grade builds it and graded by the test programs themselves, as a student's
+# make grade grades. Every lesson scores 0: a test that compares a lesson
+# with an earlier one passes no more when both draw nothing.
+h="$work/handout-stubbed"
+rm -rf "$h"
+if sh tools/handout.sh --earlier stubbed --dest "$h" "$last" >"$work/stubbed.log" 2>&1 &&
+    (cd "$h" && make --no-print-directory -j"$cores" -k grade-build GRADE_WARNINGS_SHOWN=1 &&
+        sh tools/grade.sh --build build "$@") >>"$work/stubbed.log" 2>&1; then
+    scored=$(sed -n 's/^  \([0-9][0-9]_[a-z_]*\): \([0-9.]*\)\/[0-9.]*$/\1 \2/p' "$work/stubbed.log" |
+        awk '$2 != 0 { printf " %s", $1 }')
+    graded=$(grep -c '^  [0-9][0-9]_[a-z_]*: [0-9.]*/[0-9.]*$' "$work/stubbed.log")
+    if [ -n "$scored" ] || [ "$graded" -ne "$#" ]; then
+        grep '^  PASS' "$work/stubbed.log" | grep -v ' 0/0 ' >&2
+        echo "$prog: error: with every lesson stubbed, $graded of $# lessons graded, and these scored points:${scored:- none} (above)" >&2
+        status=1
+    else
+        echo "$prog: with every lesson stubbed (the handout of $last, EARLIER=stubbed), all $graded lessons score 0"
+    fi
+else
+    tail -n 20 "$work/stubbed.log" >&2
+    echo "$prog: error: the handout of $last with EARLIER=stubbed could not be graded (above)" >&2
     status=1
 fi
 exit "$status"

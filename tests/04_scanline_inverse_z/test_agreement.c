@@ -10,7 +10,8 @@
  *
  * For every built-in scene (but those whose faces lie on each other by
  * design, SceneInfo.coplanar) and one OBJ mesh (a sphere pierced by a box),
- * both programs write --id-out; the test asserts that at least 99.9% of
+ * both programs write --id-out; the test asserts that lesson 04 drew (at
+ * least 1 pixel in 100 shows a face), that at least 99.9% of
  * the pixels show the same face, that every pixel that differs lies on a
  * polygon edge (a pixel next to a pixel of another face, in either picture),
  * and prints the count. */
@@ -70,6 +71,7 @@ static void expect_agreement(const char *what, const char *const *source)
     const char *dir = test_dir("04_agreement");
     Image ours = render_id(LESSON, dir, source);
     Image ref = render_id(REFERENCE, dir, source);
+    expect_drawn(&ours, what);
     expect_count(ref.width, ours.width, "picture width");
     expect_count(ref.height, ours.height, "picture height");
     long total = (long)ours.width * ours.height, differing = 0, off_edge = 0;

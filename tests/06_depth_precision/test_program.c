@@ -153,6 +153,7 @@ static void float32_agrees_with_lesson_05_on_the_built_in_scenes(void **state)
         free(run_ok("05_clipping", args5));
         free(run_ok(PROGRAM, args6));
         Image ia = read_png(a.path), ib = read_png(b.path);
+        expect_drawn(&ib, name);
         long differing = 0;
         for (size_t p = 0; p < (size_t)ia.width * (size_t)ia.height * 3; p += 3)
             differing += memcmp(ia.rgb + p, ib.rgb + p, 3) != 0;

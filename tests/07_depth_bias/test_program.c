@@ -190,6 +190,7 @@ static void without_bias_lesson_06s_picture(void **state)
         free(run_ok("06_depth_precision", args6));
         free(run_ok(PROGRAM, args7));
         Image ia = read_png(a.path), ib = read_png(b.path);
+        expect_drawn(&ib, name);
         long differing = 0;
         for (size_t p = 0; p < (size_t)ia.width * (size_t)ia.height * 3; p += 3)
             differing += memcmp(ia.rgb + p, ib.rgb + p, 3) != 0;

@@ -139,6 +139,7 @@ static void lesson_07s_picture(void **state)
         free(run_ok(PROGRAM, a8));
         Image p7 = read_png(out7.path), p8 = read_png(out8.path);
         Image i7 = read_png(id7.path), i8 = read_png(id8.path);
+        expect_drawn(&i8, MODES[m]);
         expect_count(0, differing_pixels(&p7, &p8), "pixels unlike lesson 07's");
         expect_count(0, differing_pixels(&i7, &i8), "id pixels unlike lesson 07's");
         image_free(&p7), image_free(&p8), image_free(&i7), image_free(&i8);

@@ -60,11 +60,13 @@ static void pictures_free(Pictures *p)
     free(p->depth);
 }
 
-/* Every pixel the same face and the same depth, to the bit. */
+/* got drawn (expect_drawn), and every pixel the same face and the same
+ * depth as want, to the bit. */
 static void expect_same_pictures(const Pictures *want, const Pictures *got, const char *what)
 {
     assert_int_equal(want->width, got->width);
     assert_int_equal(want->height, got->height);
+    expect_drawn(&got->id, what);
     if (want->id.width != want->width || want->id.height != want->height ||
         got->id.width != got->width || got->id.height != got->height)
         fail_msg("%s: the --id-out picture is not the size of the --depth-out one", what);

@@ -250,6 +250,7 @@ static void face_checks_name_the_faces_and_their_id_colours(void **state)
     image_set(&im, 12, 40, face_id_colour(2));
     assert_int_equal(face_at(&im, 12, 40), 2);
     assert_int_equal(face_at(&im, 0, 0), NO_FACE);
+    expect_count(1, faces_shown(&im), "pixels with a face");
     assert_true(face_message(msg, sizeof msg, &im, 12, 40, 2, ""));
     assert_false(face_message(msg, sizeof msg, &im, 12, 40, 3, ""));
     expect_words(msg, "pixel (12, 40): expected face 3 (rgb 0,0,4), got face 2 (rgb 0,0,3)");

@@ -53,6 +53,15 @@ int32_t face_at(const Image *id_picture, int x, int y)
     return id_colour_face(image_get(id_picture, x, y));
 }
 
+long faces_shown(const Image *id_picture)
+{
+    long n = 0;
+    for (int y = 0; y < id_picture->height; y++)
+        for (int x = 0; x < id_picture->width; x++)
+            n += face_at(id_picture, x, y) != NO_FACE;
+    return n;
+}
+
 int32_t target_face_at(const Target *t, int x, int y)
 {
     return t->face[(size_t)y * (size_t)t->width + (size_t)x];
@@ -189,6 +198,14 @@ void expect_at_least_at(long least, long actual, const char *what, const char *f
     observe_bound(file, line, '>', actual, least);
     if (!at_least_message(msg, sizeof msg, least, actual, what))
         fail_with(msg, file, line);
+}
+
+void expect_drawn_at(const Image *id_picture, const char *what, const char *file, int line)
+{
+    char words[MESSAGE_MAX];
+    snprintf(words, sizeof words, "%s%spixels with a face", prefix(what), separator(what));
+    expect_at_least_at((long)id_picture->width * id_picture->height / 100,
+                       faces_shown(id_picture), words, file, line);
 }
 
 void expect_at_most_at(long most, long actual, const char *what, const char *file, int line)

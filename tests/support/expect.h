@@ -27,6 +27,8 @@
 /* The face a pixel of an id picture (--id-out) shows, NO_FACE for
  * the black background. */
 int32_t face_at(const Image *id_picture, int x, int y);
+/* How many pixels of an id picture show a face. */
+long faces_shown(const Image *id_picture);
 /* What the target holds at pixel (x, y). */
 int32_t target_face_at(const Target *t, int x, int y);
 float target_depth_at(const Target *t, int x, int y);
@@ -37,6 +39,12 @@ float target_depth_at(const Target *t, int x, int y);
 /* expect_at_least(least, actual, what): "what: expected at least 1, got 0". */
 #define expect_at_least(e, a, what) \
     expect_at_least_at((long)(e), (long)(a), (what), __FILE__, __LINE__)
+/* expect_drawn(id_picture, what): at least 1 pixel in 100 shows a face,
+ * "what: pixels with a face: expected at least 1200, got 0". A test that
+ * compares a lesson's picture with another lesson's checks it first: a
+ * lesson that draws nothing agrees with another that draws nothing (a
+ * handout whose earlier lessons are stubbed too, EARLIER=stubbed). */
+#define expect_drawn(id, what) expect_drawn_at((id), (what), __FILE__, __LINE__)
 /* expect_at_most(most, actual, what): "what: expected at most 9, got 12". */
 #define expect_at_most(e, a, what) \
     expect_at_most_at((long)(e), (long)(a), (what), __FILE__, __LINE__)
@@ -79,6 +87,7 @@ void expect_count_at(long expected, long actual, const char *what, const char *f
 void expect_at_least_at(long least, long actual, const char *what, const char *file,
                         int line);
 void expect_at_most_at(long most, long actual, const char *what, const char *file, int line);
+void expect_drawn_at(const Image *id_picture, const char *what, const char *file, int line);
 void expect_colour_at(Rgb expected, Rgb actual, const char *what, const char *file,
                       int line);
 void expect_colour_that_at(Rgb actual, bool ok, const char *what, const char *expected_words,
