@@ -337,7 +337,7 @@ for lesson in "$@"; do
         # Its own TEST_OUTPUT: tests of one program run side by side here,
         # and their scratch files must not meet.
         tout="$GRADE_OUTPUT/$bin.$name"
-        [ ! -e "$tout" ] || rm -rf "$tout"
+        if [ -e "$tout" ] || [ -L "$tout" ]; then rm -rf "$tout"; fi
         mkdir -p "$tout"
         exe="$GRADE_BUILD/tests/$GRADE_LESSON/$bin"
         if [ ! -x "$exe" ]; then
