@@ -18,7 +18,6 @@
 
 static int imin(int a, int b) { return a < b ? a : b; }
 static int imax(int a, int b) { return a > b ? a : b; }
-static int64_t first_centre_at_or_after(int64_t v) { return ceil_div(v - HALF_PIXEL, S); }
 
 /* ---- Set-up: each polygon into the bins of the tiles it may touch ------ */
 
@@ -85,8 +84,8 @@ static void set_up_polygon(const Primitive *q, const Corner *c, int n, int turn)
         lo.y = c[k].y < lo.y ? c[k].y : lo.y, hi.y = c[k].y > hi.y ? c[k].y : hi.y;
     }
     Poly p = {/* the pixel centres of the box, on the screen */
-              .x0 = imin(t->width, imax(0, (int)first_centre_at_or_after(lo.x))),
-              .y0 = imin(t->height, imax(0, (int)first_centre_at_or_after(lo.y))),
+              .x0 = imin(t->width, imax(0, (int)ceil_div(lo.x - HALF_PIXEL, S))),
+              .y0 = imin(t->height, imax(0, (int)ceil_div(lo.y - HALF_PIXEL, S))),
               .x1 = imax(0, imin(t->width, (int)floor_div(hi.x - HALF_PIXEL, S) + 1)),
               .y1 = imax(0, imin(t->height, (int)floor_div(hi.y - HALF_PIXEL, S) + 1))};
     if (p.x0 >= p.x1 || p.y0 >= p.y1)
@@ -99,8 +98,7 @@ static void set_up_polygon(const Primitive *q, const Corner *c, int n, int turn)
         fast_finish(t, q->state, NULL), room = bins_room(b, &p, n);
     if (room)
         bin_polygon(b, &p, c, n, turn);
-    else
-        q->state->fast.out_of_memory = true;
+    q->state->fast.out_of_memory = q->state->fast.out_of_memory || !room;
 }
 
 /* A convex polygon as lesson 04 takes it (false: draw its triangles); no 1/d is
@@ -161,14 +159,13 @@ static void count(TileWork *w, uint64_t tested, uint64_t passed) /* the summary'
             w->stats.passed += (uint64_t)__builtin_popcountll(passed);
 }
 
-/* The block's pixels of box: skipped when lesson 09's tile buffer says none
- * can pass, else those inside the m edges crossed tested by the kernel (plain
- * C where the screen cuts a row short). farthest: p's over the tile. */
+/* The block's pixels of box: skipped when lesson 09's tile buffer (its tile
+ * k) says none can pass, else those inside the m edges crossed tested by the
+ * kernel (plain C where the screen cuts a row short). farthest: p's over the tile. */
 static void draw_block(TileWork *w, const Poly *p, const Primitive *plane, float farthest,
-                       int x0, int y0, uint64_t box, const EdgeFn *crossed, int m)
+                       int k, int x0, int y0, uint64_t box, const EdgeFn *crossed, int m)
 {
     HierarchicalZ *h = w->hiz, *ask = h;
-    int k = h ? y0 / BLOCK_SIZE * h->tiles_x + x0 / BLOCK_SIZE : 0;
     bool reversed = w->s->depth.mapping == REVERSED;
     if (h && !(reversed ? farthest < h->far[k] : farthest > h->far[k]))
         h->tiles_tested++, ask = NULL; /* p is nowhere farther than the block: asked, not skipped */
@@ -200,12 +197,11 @@ static uint64_t box_mask(int left, int right, int top, int bottom)
            ~(uint64_t)0 >> (BLOCK_SIZE * (BLOCK_SIZE - bottom));
 }
 
-/* When p is small (corners 16 pixels apart at most) and its part of the
- * tile (x0 .. x1 - 1, y0 .. y1 - 1) fits in 16 x 16 pixels: its up to 4
- * pieces of 8 x 8, each in the 8 x 8 window at its first pixel, moved left to
- * stay in the tile (no other thread's pixel), drawn by the kernel. p
- * is near its windows: no edge's values there leave 32 bits, none sorted out.
- * False: p is larger, or a cutout, kept by its place in a block. */
+/* When p is small (corners 16 pixels apart at most) and its part of the tile
+ * (x0 .. x1 - 1, y0 .. y1 - 1) fits in 16 x 16 pixels: its up to 4 pieces of 8 x 8, each
+ * drawn by the kernel in the 8 x 8 window at its first pixel, moved left to stay in the
+ * tile (no other thread's pixel). p is near its windows: no edge's values there leave
+ * 32 bits, none sorted out. False: p is larger, or a cutout, kept by its place in a block. */
 static bool draw_windows(TileWork *w, const Poly *p, const EdgeFn *e, int x0, int y0, int x1,
                          int y1)
 {
@@ -229,7 +225,8 @@ static bool draw_windows(TileWork *w, const Poly *p, const EdgeFn *e, int x0, in
 
 /* p's blocks in the tile, row by row, only where its box is (or its windows).
  * An edge that p's part of the tile lies wholly inside is left out: where p
- * covers the tile whole, its blocks test no edge at all. */
+ * covers the tile whole, its blocks test no edge at all. Uncounted, a block
+ * behind p's nearest value over the tile is skipped before its coverage. */
 static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
 {
     int x0 = imax(p->x0, w->tx0), x1 = imin(p->x1, w->tx1);
@@ -238,6 +235,8 @@ static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
         return;
     Primitive plane = plane_of(w, &p->depth);
     float farthest = w->hiz ? hiz_bound(&plane, x0, y0, x1 - 1, y1 - 1, false) : 0;
+    float nearest = w->hiz ? hiz_bound(&plane, x0, y0, x1 - 1, y1 - 1, true) : 0;
+    bool uncounted = w->hiz && !w->t->counting, reversed = w->s->depth.mapping == REVERSED;
     EdgeFn crossing[POLYGON_MAX_CORNERS], crossed[POLYGON_MAX_CORNERS]; /* tile's, block's */
     int n = 0, m; /* of each */
     for (uint32_t k = 0; k < p->n; k++) {
@@ -250,10 +249,13 @@ static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
     }
     for (int by = y0 & ~LAST; by < y1; by += BLOCK_SIZE)
         for (int bx = x0 & ~LAST; bx < x1; bx += BLOCK_SIZE) {
+            int k = w->hiz ? by / BLOCK_SIZE * w->hiz->tiles_x + bx / BLOCK_SIZE : 0;
+            if (uncounted && (reversed ? nearest < w->hiz->far[k] : nearest > w->hiz->far[k]))
+                continue; /* no fragment of it can pass */
             uint64_t box = box_mask(imax(p->x0 - bx, 0), imin(p->x1 - bx, BLOCK_SIZE),
                                     imax(p->y0 - by, 0), imin(p->y1 - by, BLOCK_SIZE));
             if ((box = block_coverage(crossing, n, bx, by, box, crossed, &m)))
-                draw_block(w, p, &plane, farthest, bx, by, box, crossed, m);
+                draw_block(w, p, &plane, farthest, k, bx, by, box, crossed, m);
         }
 }
 
@@ -311,11 +313,10 @@ bool fast_finish(Target *t, LessonState *s, Error *err)
         started++;
     if (id)
         draw_tiles(&th[0]); /* this thread draws too */
-    for (int i = 0; id && i < started; i++) {
-        if (i > 0)
-            pthread_join(id[i], NULL);
+    for (int i = 1; i < started; i++)
+        pthread_join(id[i], NULL);
+    for (int i = 0; id && i < nthreads; i++) /* a thread not started added nothing */
         tile_work_end(&th[i].tw);
-    }
     bins_empty(b);
     free(id), free(th);
     fr->out_of_memory = fr->out_of_memory || (b && !id);

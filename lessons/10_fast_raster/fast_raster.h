@@ -85,8 +85,7 @@ typedef struct { /* simd.c's AVX2; extras/kernels.c's plain C and SSE2: the same
      * n edges (values there in 32 bits; none: all of box), *inside, tested: those that
      * passed. *farthest: the block's farthest value after, when every row had one; or NaN. */
     uint64_t (*draw)(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t box,
-                     const EdgeFn *e, int n, const BlockDepth *d, uint64_t *inside,
-                     float *farthest);
+                     const EdgeFn *e, int n, const BlockDepth *d, uint64_t *inside, float *farthest);
 } BlockKernels;
 #define ROW(mask, j) ((int)((mask) >> (8 * (j)) & 0xff)) /* row j's 8 bits */
 

@@ -1,10 +1,13 @@
-/* test_set_up.c: lesson 10 draws the same bits whoever sets its faces up.
- * With two threads its faces are held back and set up by both threads at
- * fast_finish (extras/held.c); with FastRaster.hold false (the benchmark's
- * FAST_RASTER_SET_UP=one) each is set up by the calling thread as it comes,
- * and the threads only draw. Both must give the depth and face buffers of
- * one thread, to the bit: random triangles and quads of every size, some
- * across the screen's edges, in more polygons than the bins take at once. */
+/* test_set_up.c: lesson 10 draws the same bits whoever sets its faces up,
+ * and whether it counts or not. With two threads its faces are held back and
+ * set up by both threads at fast_finish (extras/held.c); with FastRaster.hold
+ * false (the benchmark's FAST_RASTER_SET_UP=one) each is set up by the
+ * calling thread as it comes, and the threads only draw. Both must give the
+ * depth and face buffers of one thread, to the bit: random triangles and
+ * quads of every size, some across the screen's edges, in more polygons than
+ * the bins take at once. With lesson 09's tile buffer and counting off (the
+ * benchmark's frames), a block behind a polygon's nearest value over the tile
+ * is skipped before its coverage is found: the same bits again. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -34,16 +37,20 @@ static double unit(void) /* xorshift64 in [0, 1): the same faces on every machin
 }
 
 /* The same FACES faces, drawn by an engine of threads threads that holds its
- * faces back for them (hold) or sets each up as it comes. */
-static Target draw(int threads, bool hold)
+ * faces back for them (hold) or sets each up as it comes; with a tile buffer
+ * (tiles, when not NULL: its counts added up there), counting or not. */
+static Target draw_counting(int threads, bool hold, HierarchicalZ *tiles, bool counting)
 {
     Target t;
     Error err;
     if (!target_init(&t, WIDTH, HEIGHT, &err))
         fail_msg("target_init: %s", err.msg);
+    if (tiles && !hiz_begin(tiles, &t, BLOCK_SIZE, &err))
+        fail_msg("hiz_begin: %s", err.msg);
+    t.counting = counting;
     LessonState s = fast_raster(depth_setup(UNORM24, STANDARD, 0.1, 1000.0), simd_best(),
                                 threads, false);
-    s.fast.hold = hold;
+    s.fast.hold = hold, s.hiz = tiles;
     FAST_ZBUFFER.clear(&t, &s);
     state = 88172645463325252ull;
     DrawContext ctx = {0.1, 1000.0, WIDTH, HEIGHT};
@@ -63,6 +70,8 @@ static Target draw(int threads, bool hold)
     fast_raster_free(&s.fast);
     return t;
 }
+
+static Target draw(int threads, bool hold) { return draw_counting(threads, hold, NULL, true); }
 
 static void expect_same_buffers(const Target *want, const Target *got, const char *what)
 {
@@ -91,10 +100,40 @@ static void faces_set_up_by_one_thread_or_by_both_draw_the_same_bits(void **unus
     target_free(&one), target_free(&held), target_free(&by_caller);
 }
 
+static void blocks_skipped_uncounted_draw_the_same_bits(void **unused)
+{
+    (void)unused;
+    HierarchicalZ h[4] = {{0}};
+    Target t[5] = {draw(1, true), draw_counting(1, true, &h[0], true),
+                   draw_counting(1, true, &h[1], false), draw_counting(2, true, &h[2], false),
+                   draw_counting(2, false, &h[3], false)};
+    static const char *const what[5] = {
+        "no tile buffer, 1 thread", "the tile buffer, counted",
+        "the tile buffer, uncounted, 1 thread", "the tile buffer, uncounted, 2 threads, faces held",
+        "the tile buffer, uncounted, 2 threads"};
+    /* Counted, the tile buffer skips blocks: there is something to skip.
+     * Uncounted, fewer are counted: the blocks skipped first are not. */
+    observe_value("blocks skipped, counted", h[0].tiles_skipped);
+    observe_value("blocks skipped, uncounted", h[1].tiles_skipped);
+    if (!(h[0].tiles_skipped > 1000 && h[1].tiles_skipped < h[0].tiles_skipped / 2))
+        fail_msg("blocks skipped: %llu counted, %llu uncounted", h[0].tiles_skipped,
+                 h[1].tiles_skipped);
+    for (int k = 0; k < 5; k++) {
+        observe_target(&t[k]);
+        observe_data("depth", t[k].depth, (size_t)WIDTH * HEIGHT * sizeof *t[k].depth);
+        expect_same_buffers(&t[0], &t[k], what[k]);
+    }
+    for (int k = 0; k < 4; k++)
+        hiz_free(&h[k]);
+    for (int k = 0; k < 5; k++)
+        target_free(&t[k]);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(faces_set_up_by_one_thread_or_by_both_draw_the_same_bits),
+        cmocka_unit_test(blocks_skipped_uncounted_draw_the_same_bits),
     };
     return cmocka_run_group_tests_name("10_fast_raster set-up", tests, NULL, NULL);
 }
