@@ -234,9 +234,9 @@ static void draw_in_tile(TileWork *w, const Poly *p, const EdgeFn *e)
     if (draw_windows(w, p, e, x0, y0, x1, y1)) /* small: 8 x 8 windows */
         return;
     Primitive plane = plane_of(w, &p->depth);
-    float farthest = w->hiz ? hiz_bound(&plane, x0, y0, x1 - 1, y1 - 1, false) : 0;
-    float nearest = w->hiz ? hiz_bound(&plane, x0, y0, x1 - 1, y1 - 1, true) : 0;
     bool uncounted = w->hiz && !w->t->counting, reversed = w->s->depth.mapping == REVERSED;
+    float farthest = w->hiz ? hiz_bound(&plane, x0, y0, x1 - 1, y1 - 1, false) : 0;
+    float nearest = uncounted ? hiz_bound(&plane, x0, y0, x1 - 1, y1 - 1, true) : 0;
     EdgeFn crossing[POLYGON_MAX_CORNERS], crossed[POLYGON_MAX_CORNERS]; /* tile's, block's */
     int n = 0, m; /* of each */
     for (uint32_t k = 0; k < p->n; k++) {
