@@ -5,7 +5,7 @@
  *   blocks   edge functions at a block's corners take or reject it whole;
  *            a block an edge crosses is tested per pixel (lesson 04's rule)
  *   depth    lessons 06 to 09's: a block lesson 09's tile buffer hides is skipped
- *   SIMD     a block row at once: AVX2 8 pixels (simd.c), SSE2 4
+ *   SIMD     a block row at once: AVX2 8 pixels (simd.c), SSE2 4; AVX-512 2 rows
  *   threads  tiles handed out one at a time: no two share a pixel
  * Bit 8 j + i of a block's mask is its pixel (i, j). */
 #ifndef FAST_RASTER_H
@@ -21,7 +21,7 @@
 #define TILE_SIZE 64 /* pixels: a tile is 8 x 8 blocks */
 #define BLOCK_SIZE 8 /* pixels: a block row is one AVX2 register of floats */
 
-typedef enum { SIMD_PIXELS, SIMD_NONE, SIMD_SSE2, SIMD_AVX2 } Simd; /* pixels: no blocks */
+typedef enum { SIMD_PIXELS, SIMD_NONE, SIMD_SSE2, SIMD_AVX2, SIMD_AVX512 } Simd; /* pixels: none */
 typedef struct Bins Bins; /* what waits for fast_finish */
 typedef struct Held Held; /* faces held back for the threads to set up (extras/held.c) */
 

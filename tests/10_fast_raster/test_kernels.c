@@ -50,6 +50,8 @@ static int others(const BlockKernels **k, const char **name)
         k[n] = kernels_of(SIMD_SSE2), name[n++] = "sse2";
     if (simd_best() >= SIMD_AVX2)
         k[n] = kernels_of(SIMD_AVX2), name[n++] = "avx2";
+    if (simd_best() >= SIMD_AVX512)
+        k[n] = kernels_of(SIMD_AVX512), name[n++] = "avx512";
     return n;
 }
 
@@ -70,8 +72,8 @@ static void random_edges(EdgeFn *e, int n, int x0, int y0)
 static void every_kernel_covers_the_pixels_of_a_brute_force(void **state_)
 {
     (void)state_;
-    const BlockKernels *k[2];
-    const char *name[2];
+    const BlockKernels *k[3];
+    const char *name[3];
     int nk = others(k, name);
     BlockDepth d = {0, 0, 0, 0, 0, false, 7, ~(uint64_t)0, FLOAT32}; /* z_w 0: every pixel passes */
     for (int round = 0; round < ROUNDS; round++) {
@@ -113,8 +115,8 @@ static float random_stored(const BlockDepth *d)
 static void every_kernel_tests_depth_as_plain_c(void **state_)
 {
     (void)state_;
-    const BlockKernels *k[2];
-    const char *name[2];
+    const BlockKernels *k[3];
+    const char *name[3];
     int nk = others(k, name);
     static const DepthFormat FORMATS[3] = {UNORM16, UNORM24, FLOAT32};
     static const float UNORM[3] = {65535.0f, 16777215.0f, 0.0f};

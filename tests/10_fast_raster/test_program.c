@@ -151,6 +151,12 @@ static void avx2_draws_lesson_09s_pictures(void **state)
     expect_every_scene_like_lesson_09("avx2");
 }
 
+static void avx512_draws_lesson_09s_pictures(void **state) /* skipped without AVX-512 */
+{
+    (void)state;
+    expect_every_scene_like_lesson_09("avx512");
+}
+
 /* Lesson 07 has no cutouts (crowd's fences): every other scene, in the
  * depth buffers lesson 08 does not offer, and where --far 12 cuts walls and
  * inside (lesson 05 clips them: no fragment lies beyond the far plane). */
@@ -298,7 +304,7 @@ static void expect_refused(const char *flag, const char *value, const char *mess
 static void bad_command_lines_are_refused_with_status_2(void **state)
 {
     (void)state;
-    expect_refused("--simd", "mmx", "--simd: 'mmx' is not one of none, sse2, avx2, pixels");
+    expect_refused("--simd", "mmx", "--simd: 'mmx' is not one of none, sse2, avx2, avx512, pixels");
     expect_refused("--threads", "0", "--threads: 0 is out of range (1 to 256)");
     expect_refused("--threads", "257", "--threads: 257 is out of range (1 to 256)");
     expect_refused("--threads", "two", "--threads: 'two' is not a whole number");
@@ -316,6 +322,7 @@ int main(void)
         cmocka_unit_test(pixels_without_blocks_draw_lesson_09s_pictures),
         cmocka_unit_test(sse2_draws_lesson_09s_pictures),
         cmocka_unit_test(avx2_draws_lesson_09s_pictures),
+        cmocka_unit_test(avx512_draws_lesson_09s_pictures),
         cmocka_unit_test(other_depth_buffers_draw_lesson_07s_pictures),
         cmocka_unit_test(a_far_plane_through_a_face_draws_lesson_09s_picture),
         cmocka_unit_test(fragments_are_counted_as_lesson_08_counts_them),

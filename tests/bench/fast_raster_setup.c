@@ -1,7 +1,7 @@
 /* fast_raster_setup.c: lesson 10 in the benchmark (bench_setup.h): its
  * engine with unorm24, standard (as llvmpipe's rows use), the widest SIMD the
  * machine has, once with one thread and once with one per core. To time
- * another kernel: FAST_RASTER_SIMD=none (or sse2, or pixels) in the environment;
+ * another kernel: FAST_RASTER_SIMD=none (or sse2, avx2, or pixels) in the environment;
  * every face set up by the calling thread, none by the others: FAST_RASTER_SET_UP=one. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -38,6 +38,8 @@ LessonState *bench_configure(Target *t, int k, char *name, int size, bool *wall_
         simd = SIMD_NONE;
     else if (chosen && strcmp(chosen, "sse2") == 0 && simd >= SIMD_SSE2)
         simd = SIMD_SSE2;
+    else if (chosen && strcmp(chosen, "avx2") == 0 && simd >= SIMD_AVX2)
+        simd = SIMD_AVX2;
     else if (chosen && strcmp(chosen, "pixels") == 0)
         simd = SIMD_PIXELS;
     engine = fast_raster(depth_setup(UNORM24, STANDARD, WORKLOAD_NEAR, WORKLOAD_FAR), simd,

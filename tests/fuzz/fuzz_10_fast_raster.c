@@ -24,7 +24,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     DepthSetup depth = fuzz_depth_setup(&s, &b, false);
     DepthBias bias = fuzz_bias(&s, &b);
     uint8_t pick = fuzz_u8(&b);
-    Simd simd = (Simd)(pick % 4);
+    Simd simd = (Simd)(pick % 5);
     if (simd > simd_best())
         simd = simd_best();
     Target counted, fast;

@@ -13,7 +13,7 @@ void bins_free(Bins *b);
 /* Room for need items of size bytes in *items, of *cap; false (nothing changed) without. */
 bool grow_array(void **items, size_t *cap, size_t need, size_t size);
 
-extern const BlockKernels SSE2_KERNELS, AVX2_KERNELS; /* AVX2: simd.c */
+extern const BlockKernels SSE2_KERNELS, AVX2_KERNELS, AVX512_KERNELS; /* simd.c, avx512.c */
 Simd simd_best(void);                      /* the widest this machine has */
 const BlockKernels *kernels_of(Simd simd); /* PLAIN_KERNELS without SIMD */
 

@@ -23,9 +23,9 @@ enum { FLAG_SIMD, FLAG_THREADS, FLAG_FORMAT, FLAG_MAPPING, FLAG_OFFSET, FLAG_CLA
 #endif
 
 static const LessonFlag FLAGS[FLAG_COUNT] = {
-    [FLAG_SIMD] = {"--simd", "S", "none (plain C), sse2 or avx2: how many pixels of a block "
-                                  "at once (default: the widest this machine has); pixels: "
-                                  "no blocks, each pixel of a polygon's box in plain C"},
+    [FLAG_SIMD] = {"--simd", "S", "none (plain C), sse2, avx2 or avx512: how many pixels of a "
+                                  "block at once (default: the widest this machine has); "
+                                  "pixels: no blocks, each pixel of a polygon's box in plain C"},
     [FLAG_THREADS] = {"--threads", "N", "threads drawing tiles, 1 to 256 (default: the "
                                         "machine's cores); the picture is the same for any N"},
     [FLAG_FORMAT] = {"--depth-format", "F", "what the depth buffer stores: unorm16, unorm24 "
@@ -40,7 +40,8 @@ static const LessonFlag FLAGS[FLAG_COUNT] = {
 };
 
 static const char *const SIMD_NAMES[] = {[SIMD_PIXELS] = "pixels", [SIMD_NONE] = "none",
-                                         [SIMD_SSE2] = "sse2", [SIMD_AVX2] = "avx2"};
+                                         [SIMD_SSE2] = "sse2", [SIMD_AVX2] = "avx2",
+                                         [SIMD_AVX512] = "avx512"};
 static const char *simd_name(Simd simd)
 {
     return SIMD_NAMES[simd];
@@ -83,7 +84,7 @@ LessonState fast_chosen(const Run *run)
     long threads = cores();
     if (x[FLAG_THREADS])
         parse_int("--threads", x[FLAG_THREADS], 1, MAX_THREADS, &threads, &ignored);
-    Simd simd = x[FLAG_SIMD] ? (Simd)find_name(x[FLAG_SIMD], SIMD_NAMES, 4) : simd_best();
+    Simd simd = x[FLAG_SIMD] ? (Simd)find_name(x[FLAG_SIMD], SIMD_NAMES, 5) : simd_best();
     LessonState state = fast_raster(depth_flags_setup(run, x[FLAG_FORMAT], x[FLAG_MAPPING]), simd,
                                     (int)threads, run->opt.overdraw_out || run->opt.trace_set);
     state.bias = bias_flags_chosen(x[FLAG_OFFSET], x[FLAG_CLAMP], &run->render.mesh);
@@ -97,9 +98,9 @@ static bool choose(Run *run, Error *err)
     if (run->opt.steps_dir)
         return error_set(err, "--steps does not apply to 10_fast_raster (faces are drawn "
                               "later, tile by tile: there is no picture after each face)");
-    int simd = x[FLAG_SIMD] ? find_name(x[FLAG_SIMD], SIMD_NAMES, 4) : SIMD_NONE;
+    int simd = x[FLAG_SIMD] ? find_name(x[FLAG_SIMD], SIMD_NAMES, 5) : SIMD_NONE;
     if (simd < 0)
-        return error_set(err, "--simd: '%s' is not one of none, sse2, avx2, pixels", x[FLAG_SIMD]);
+        return error_set(err, "--simd: '%s' is not one of none, sse2, avx2, avx512, pixels", x[FLAG_SIMD]);
     if (simd > (int)simd_best())
         return error_set(err, "--simd %s: this machine (or build) has only %s", x[FLAG_SIMD],
                          SIMD_NAMES[simd_best()]);

@@ -3,7 +3,8 @@
  * simd.c's AVX2 kernel (the page teaches that one), for --simd none and
  * sse2, for a plane only plain C takes, and for an x86-64 without AVX2. Both
  * find the pixels inside the edges first, then test them.
- * They give the same bits (simd.c says how). Then which kernels run. */
+ * They give the same bits (simd.c says how). Then which kernels run: the
+ * widest the machine has, AVX-512's (avx512.c) where it has AVX-512. */
 #include "engine.h"
 
 #include <math.h>
@@ -191,6 +192,8 @@ const BlockKernels SSE2_KERNELS = {sse2_draw};
 const BlockKernels *kernels_of(Simd simd)
 {
 #if defined(__x86_64__)
+    if (simd == SIMD_AVX512)
+        return &AVX512_KERNELS;
     if (simd == SIMD_AVX2)
         return &AVX2_KERNELS;
     if (simd == SIMD_SSE2)
@@ -204,6 +207,9 @@ Simd simd_best(void)
 {
 #if defined(__x86_64__)
     __builtin_cpu_init();
+    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+        __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512bw"))
+        return SIMD_AVX512;
     return __builtin_cpu_supports("avx2") ? SIMD_AVX2 : SIMD_SSE2;
 #else
     return SIMD_NONE;

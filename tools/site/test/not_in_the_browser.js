@@ -5,7 +5,7 @@
 // A command the browser build cannot run as the native one does: lesson 10
 // on more than one thread, or with x86 SIMD. It must be refused there.
 function notInTheBrowser(args) {
-  return /(^|\s)--threads\s+([2-9]|\d\d)|(^|\s)--simd\s+(sse2|avx2)/.test(args.join(" "));
+  return /(^|\s)--threads\s+([2-9]|\d\d)|(^|\s)--simd\s+(sse2|avx2|avx512)/.test(args.join(" "));
 }
 
 module.exports = {notInTheBrowser};
