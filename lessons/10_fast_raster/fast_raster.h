@@ -21,7 +21,7 @@
 #define TILE_SIZE 64 /* pixels: a tile is 8 x 8 blocks */
 #define BLOCK_SIZE 8 /* pixels: a block row is one AVX2 register of floats */
 
-typedef enum { SIMD_PIXELS, SIMD_NONE, SIMD_SSE2, SIMD_AVX2, SIMD_AVX512 } Simd; /* pixels: none */
+typedef enum { SIMD_PIXELS /* no blocks */, SIMD_NONE, SIMD_SSE2, SIMD_AVX2, SIMD_AVX512 } Simd;
 typedef struct Bins Bins; /* what waits for fast_finish */
 typedef struct Held Held; /* faces held back for the threads to set up (extras/held.c) */
 
@@ -80,7 +80,7 @@ struct Bins {
     float clear;   /* the cleared depth value */
 };
 
-typedef struct { /* simd.c's AVX2; extras/kernels.c's plain C and SSE2: the same bits */
+typedef struct { /* simd.c's AVX2; extras/: plain C, SSE2, AVX-512: the same bits */
     /* The block at (x0, y0), its first pixel at depth[0]: its pixels of box inside e's
      * n edges (values there in 32 bits; none: all of box), *inside, tested: those that
      * passed. *farthest: the block's farthest value after, when every row had one; or NaN. */

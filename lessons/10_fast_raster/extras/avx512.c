@@ -86,7 +86,7 @@ pairs(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t box, 
         stored = _mm512_mask_blend_ps((__mmask16)kept, stored, z);
         far = reversed ? _mm512_min_ps(far, stored) : _mm512_max_ps(far, stored);
     }
-    float lane[4]; /* the farthest of 16 lanes, as SSE2's of 4 */
+    float lane[4]; /* the farthest of 16 lanes, as SSE2's of 4: in registers, not 16 in C */
     __m256 lo = _mm512_castps512_ps256(far), hi = _mm512_extractf32x8_ps(far, 1);
     __m256 half = reversed ? _mm256_min_ps(lo, hi) : _mm256_max_ps(lo, hi);
     __m128 a = _mm256_castps256_ps128(half), b = _mm256_extractf128_ps(half, 1);

@@ -100,7 +100,8 @@ static bool choose(Run *run, Error *err)
                               "later, tile by tile: there is no picture after each face)");
     int simd = x[FLAG_SIMD] ? find_name(x[FLAG_SIMD], SIMD_NAMES, 5) : SIMD_NONE;
     if (simd < 0)
-        return error_set(err, "--simd: '%s' is not one of none, sse2, avx2, avx512, pixels", x[FLAG_SIMD]);
+        return error_set(err, "--simd: '%s' is not one of none, sse2, avx2, avx512, pixels",
+                         x[FLAG_SIMD]);
     if (simd > (int)simd_best())
         return error_set(err, "--simd %s: this machine (or build) has only %s", x[FLAG_SIMD],
                          SIMD_NAMES[simd_best()]);
