@@ -3,7 +3,6 @@
 #include "fast_raster.h"
 
 #include <math.h>
-#include <pthread.h>
 #include <stdatomic.h>
 #include <stdlib.h>
 
@@ -301,25 +300,19 @@ bool fast_finish(Target *t, LessonState *s, Error *err)
         return true;
     set_up_held_faces(t, s);
     Bins *b = fr->bins;
-    int nthreads = fr->count ? 1 : imax(1, fr->threads), started = 1;
+    int nthreads = fr->count ? 1 : imax(1, fr->threads);
     Thread *th = b ? aligned_alloc(64, (size_t)nthreads * sizeof *th) : NULL;
-    pthread_t *id = th ? malloc((size_t)nthreads * sizeof *id) : NULL;
     Work work = {.b = b, .ntiles = b ? b->tiles_x * b->tiles_y : 0};
     atomic_init(&work.next, 0);
-    for (int i = 0; id && i < nthreads; i++)
+    for (int i = 0; th && i < nthreads; i++)
         th[i].work = &work, tile_work_begin(&th[i].tw, t, s);
-    while (id && started < imin(nthreads, work.ntiles) &&
-           pthread_create(&id[started], NULL, draw_tiles, &th[started]) == 0)
-        started++;
-    if (id)
-        draw_tiles(&th[0]); /* this thread draws too */
-    for (int i = 1; i < started; i++)
-        pthread_join(id[i], NULL);
-    for (int i = 0; id && i < nthreads; i++) /* a thread not started added nothing */
+    if (th) /* this thread draws too */
+        run_threads(&fr->pool, nthreads, draw_tiles, th, sizeof *th);
+    for (int i = 0; th && i < nthreads; i++)
         tile_work_end(&th[i].tw);
     bins_empty(b);
-    free(id), free(th);
-    fr->out_of_memory = fr->out_of_memory || (b && !id);
+    free(th);
+    fr->out_of_memory = fr->out_of_memory || (b && !th);
     if (fr->out_of_memory && err)
         error_set(err, "out of memory for the bins and tiles: the picture is not whole");
     return !fr->out_of_memory;

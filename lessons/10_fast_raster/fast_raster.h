@@ -24,13 +24,14 @@
 typedef enum { SIMD_PIXELS /* no blocks */, SIMD_NONE, SIMD_SSE2, SIMD_AVX2, SIMD_AVX512 } Simd;
 typedef struct Bins Bins; /* what waits for fast_finish */
 typedef struct Held Held; /* faces held back for the threads to set up (extras/held.c) */
+typedef struct Pool Pool; /* the threads, started once, then kept (extras/pool.c) */
 
 typedef struct {
     Simd simd;        /* the widest this machine has, or --simd */
     int threads;      /* --threads */
     bool count;       /* overdraw[] and --trace: plain C, one thread */
     uint64_t keep;    /* the face's pixels a cutout keeps, in any block */
-    Bins *bins; Held *held;
+    Bins *bins; Held *held; Pool *pool;
     bool hold;        /* with threads: faces held back for them to set up (else: by this one) */
     bool set_up_only; /* a thread's copy, setting faces up: it never draws */
     bool out_of_memory; /* an allocation failed: a face or a tile went undrawn */
@@ -42,7 +43,7 @@ LessonState fast_raster(DepthSetup depth, Simd simd, int threads, bool count);
  * drawn is done (the frame may go on). False, with err (when not NULL) set,
  * when memory ran out for a face or a tile since the clear: not whole. */
 bool fast_finish(Target *t, LessonState *s, Error *err);
-void fast_raster_free(FastRaster *fr);
+void fast_raster_free(FastRaster *fr); /* and its threads */
 
 extern const Rasterizer FAST_ZBUFFER; /* the clear; faces set up and binned; then fast_finish */
 
@@ -113,6 +114,9 @@ void bins_empty(Bins *b); /* and the bins chained after it, unchained */
 bool tile_busy(const Bins *b, int tile); /* a polygon in it, in b or after */
 void draw_fast_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx);
 void set_up_held_faces(Target *t, LessonState *s); /* held.c: by the threads, in chained bins */
+/* pool.c: run(args + k size) for k = 0 .. n - 1 at once: 0 here, the others on *pool's
+ * threads (started when first needed, then kept); back when all are done. Not from them. */
+void run_threads(Pool **pool, int n, void *(*run)(void *), void *args, size_t size);
 BlockDepth block_depth(const Primitive *p, bool *plain); /* plain: not finite */
 Primitive plane_of(const TileWork *w, const BlockDepth *d); /* for hiz_bound: d's plane */
 void tile_work_begin(TileWork *w, Target *t, LessonState *s); /* the tile buffer, kernels */

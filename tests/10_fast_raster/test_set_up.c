@@ -7,7 +7,8 @@
  * quads of every size, some across the screen's edges, in more polygons than
  * the bins take at once. With lesson 09's tile buffer and counting off (the
  * benchmark's frames), a block behind a polygon's nearest value over the tile
- * is skipped before its coverage is found: the same bits again. */
+ * is skipped before its coverage is found: the same bits again. The threads
+ * themselves are kept from one finish to the next (extras/pool.c). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -15,6 +16,7 @@
 
 #include <cmocka.h>
 
+#include <pthread.h>
 #include <string.h>
 
 #include "engine.h" /* extras/: simd_best */
@@ -129,11 +131,51 @@ static void blocks_skipped_uncounted_draw_the_same_bits(void **unused)
         target_free(&t[k]);
 }
 
+/* run_threads (extras/pool.c): every share once, share 0 on the calling
+ * thread, the others on the pool's threads, which are kept from one call to
+ * the next, more started when a call has more shares, none when it has one. */
+typedef struct { pthread_t caller; int runs; bool here; } Share;
+
+static void *note_share(void *arg)
+{
+    Share *sh = arg;
+    sh->runs++;
+    sh->here = pthread_equal(pthread_self(), sh->caller);
+    return NULL;
+}
+
+static void threads_are_kept_and_run_each_share_once(void **unused)
+{
+    (void)unused;
+    Pool *pool = NULL;
+    static const int shares[] = {3, 5, 2, 5, 1};
+    for (size_t c = 0; c < sizeof shares / sizeof *shares; c++) {
+        int n = shares[c];
+        Share sh[5];
+        for (int k = 0; k < n; k++)
+            sh[k] = (Share){pthread_self(), 0, false};
+        run_threads(&pool, n, note_share, sh, sizeof *sh);
+        for (int k = 0; k < n; k++)
+            if (sh[k].runs != 1 || sh[k].here != (k == 0))
+                fail_msg("%d shares: share %d ran %d times, %s", n, k, sh[k].runs,
+                         sh[k].here ? "on the calling thread" : "on another thread");
+        if (c == 0 && !pool)
+            fail_msg("3 shares: no pool was made");
+    }
+    pool_free(pool);
+    Pool *none = NULL; /* one share: no pool, no thread */
+    Share one = {pthread_self(), 0, false};
+    run_threads(&none, 1, note_share, &one, sizeof one);
+    assert_null(none);
+    assert_true(one.runs == 1 && one.here);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(faces_set_up_by_one_thread_or_by_both_draw_the_same_bits),
         cmocka_unit_test(blocks_skipped_uncounted_draw_the_same_bits),
+        cmocka_unit_test(threads_are_kept_and_run_each_share_once),
     };
     return cmocka_run_group_tests_name("10_fast_raster set-up", tests, NULL, NULL);
 }

@@ -126,6 +126,8 @@ void fast_raster_free(FastRaster *fr)
     bins_free(fr->bins);
     fr->bins = NULL;
     held_free(fr);
+    pool_free(fr->pool);
+    fr->pool = NULL;
 }
 
 /* ---- Lesson 07's set-up of a face -------------------------------------- */

@@ -9,6 +9,7 @@
 void set_up_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx); /* now */
 bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx);
 void held_free(FastRaster *fr);
+void pool_free(Pool *pool); /* its threads joined */
 void bins_free(Bins *b);
 /* Room for need items of size bytes in *items, of *cap; false (nothing changed) without. */
 bool grow_array(void **items, size_t *cap, size_t need, size_t size);

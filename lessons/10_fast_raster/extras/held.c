@@ -8,7 +8,6 @@
  * so every polygon is drawn in the order the faces came. */
 #include "engine.h"
 
-#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -91,21 +90,13 @@ void set_up_held_faces(Target *t, LessonState *s)
     }
     int runs = fr->threads < RUNS_MAX ? fr->threads : RUNS_MAX;
     Run r[RUNS_MAX];
-    pthread_t id[RUNS_MAX];
-    bool started[RUNS_MAX] = {false};
-    for (int k = 0; k < runs; k++) {
+    for (int k = 0; k < runs; k++)
         r[k] = (Run){t, s, h, h->nface * (size_t)k / (size_t)runs,
                      h->nface * (size_t)(k + 1) / (size_t)runs, k, false};
-        started[k] = k > 0 && pthread_create(&id[k], NULL, set_up_run, &r[k]) == 0;
-    }
-    set_up_run(&r[0]);
+    run_threads(&fr->pool, runs, set_up_run, r, sizeof *r);
     Bins *last = fr->bins;
     bool lost = false;
     for (int k = 0; k < runs; k++) { /* in order: run k's bins after run k - 1's */
-        if (k > 0 && !started[k])
-            set_up_run(&r[k]);
-        else if (k > 0)
-            pthread_join(id[k], NULL);
         if (h->run[k])
             last->next = h->run[k], last = h->run[k];
         lost = lost || r[k].lost;
