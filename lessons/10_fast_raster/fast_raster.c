@@ -52,18 +52,20 @@ static void bin_polygon(Bins *b, Poly *p, const Corner *c, int n, int turn)
     p->first = (uint32_t)b->nedge;
     for (int k = 0; k < n; k++) {
         int next = k + 1 < n ? k + 1 : 0; /* clockwise: backwards when p turns the other way */
-        Corner from = c[turn < 0 ? n - 1 - k : k], to = c[turn < 0 ? n - 1 - next : next];
+        Corner from = c[turn < 0 ? next : k], to = c[turn < 0 ? k : next];
         if (from.x != to.x || from.y != to.y) /* a corner twice is no edge */
             b->edge[b->nedge + p->n++] = edge_function(from, to);
     }
     const EdgeFn *e = b->edge + b->nedge;
+    bool one = p->x0 / TILE_SIZE == (p->x1 - 1) / TILE_SIZE &&
+               p->y0 / TILE_SIZE == (p->y1 - 1) / TILE_SIZE; /* one tile: binned untested */
     for (int ty = p->y0 / TILE_SIZE; ty <= (p->y1 - 1) / TILE_SIZE; ty++)
         for (int tx = p->x0 / TILE_SIZE; tx <= (p->x1 - 1) / TILE_SIZE; tx++) {
             int x0 = imax(p->x0, tx * TILE_SIZE), y0 = imax(p->y0, ty * TILE_SIZE);
             int w = imin(p->x1, (tx + 1) * TILE_SIZE) - 1 - x0;
             int h = imin(p->y1, (ty + 1) * TILE_SIZE) - 1 - y0;
             bool outside = false;
-            for (uint32_t k = 0; k < p->n && !outside; k++)
+            for (uint32_t k = 0; !one && k < p->n && !outside; k++)
                 outside = edge_max(&e[k], x0, y0, w, h) < 0;
             Bin *bin = &b->bin[ty * b->tiles_x + tx];
             if (!outside) /* bins_room made room */
