@@ -133,7 +133,9 @@ static void blocks_skipped_uncounted_draw_the_same_bits(void **unused)
 
 /* run_threads (extras/pool.c): every share once, share 0 on the calling
  * thread, the others on the pool's threads, which are kept from one call to
- * the next, more started when a call has more shares, none when it has one. */
+ * the next, more started when a call has more shares, none when it has one.
+ * The pool holds 255 threads at most (--threads: 1 to 256): shares past
+ * them are run by the calling thread. */
 typedef struct { pthread_t caller; int runs; bool here; } Share;
 
 static void *note_share(void *arg)
@@ -148,17 +150,20 @@ static void threads_are_kept_and_run_each_share_once(void **unused)
 {
     (void)unused;
     Pool *pool = NULL;
-    static const int shares[] = {3, 5, 2, 5, 1};
+    static const int shares[] = {3, 5, 2, 5, 1, 300};
     for (size_t c = 0; c < sizeof shares / sizeof *shares; c++) {
         int n = shares[c];
-        Share sh[5];
+        static Share sh[300];
         for (int k = 0; k < n; k++)
             sh[k] = (Share){pthread_self(), 0, false};
         run_threads(&pool, n, note_share, sh, sizeof *sh);
-        for (int k = 0; k < n; k++)
-            if (sh[k].runs != 1 || sh[k].here != (k == 0))
-                fail_msg("%d shares: share %d ran %d times, %s", n, k, sh[k].runs,
-                         sh[k].here ? "on the calling thread" : "on another thread");
+        for (int k = 0; k < n; k++) {
+            if (sh[k].runs != 1)
+                fail_msg("%d shares: share %d ran %d times", n, k, sh[k].runs);
+            if (sh[k].here != (k == 0 || k > 255))
+                fail_msg("%d shares: share %d ran on %s", n, k,
+                         sh[k].here ? "the calling thread" : "another thread");
+        }
         if (c == 0 && !pool)
             fail_msg("3 shares: no pool was made");
     }
