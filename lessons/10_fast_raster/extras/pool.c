@@ -1,7 +1,7 @@
 /* pool.c: lesson 10's threads, shown but not taught (fast_raster.h,
  * run_threads). Started at the first finish that has work for them, they
  * are kept: each waits for the next work, spinning a moment before it
- * sleeps, as a thread asleep takes tens of microseconds to wake and
+ * sleeps, as a thread asleep may take 50 microseconds or more to wake and
  * fast_finish hands out two works one after the other (the held faces'
  * set-up, then the tiles). A thread not started leaves its share to the
  * calling thread; the browser's build, which has no threads, draws so. */
@@ -115,6 +115,7 @@ void pool_free(Pool *p)
         return;
     pthread_mutex_lock(&p->lock);
     p->quit = true;
+    atomic_fetch_add(&p->round, 1); /* a thread still spinning stops at once */
     pthread_cond_broadcast(&p->go);
     pthread_mutex_unlock(&p->lock);
     for (int k = 0; k < p->workers; k++)
