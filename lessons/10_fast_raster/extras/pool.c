@@ -1,5 +1,5 @@
 /* pool.c: lesson 10's threads, shown but not taught (fast_raster.h,
- * run_threads). Started at the first finish that has work for them, they
+ * run_threads). Started at the first finish with more than one thread, they
  * are kept: each waits for the next work, spinning a moment before it
  * sleeps, as a thread asleep may take 50 microseconds or more to wake and
  * fast_finish hands out two works one after the other (the held faces'
