@@ -189,7 +189,7 @@ run: $(BINS)
 
 # Every test runs from the top of the tree, with BIN_DIR naming the lessons'
 # executables; tools/run-tests.sh runs the binaries in parallel (TEST_JOBS
-# at a time, the number of cores by default), prints their outputs whole and
+# at a time, one more than the cores by default), prints their outputs whole and
 # in order, and the final "N passed, M failed".
 # TEST=name becomes TEST_FILTER, which every test binary hands to cmocka's
 # test filter (tests/support/test_hooks.c): only the tests of that name run.

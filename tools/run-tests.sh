@@ -3,14 +3,19 @@
 # and ends with one line over all of them: "N passed, M failed".
 # Exit status 0 only when every test passed and every binary exited cleanly.
 #
-# The binaries run in parallel, TEST_JOBS at a time (the number of cores by
-# default), each into a log of its own. The logs are printed whole, one after
+# The binaries run in parallel, TEST_JOBS at a time (by default one more than
+# the number of cores: some tests spend seconds waiting, on a time limit or a
+# child, and the one more keeps every core busy), each into a log of its own. The logs are printed whole, one after
 # the other, in the order of the command line, each as soon as it and the
 # ones before it are done: the report reads as if they had run one by one.
 # The slowest binaries of the last run (their seconds are kept in
 # $TEST_OUTPUT/test-times) start first, so that no long one starts last.
 set -u
-jobs=${TEST_JOBS:-$(nproc 2>/dev/null || getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)}
+cores=$(nproc 2>/dev/null || getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
+case $cores in
+    ''|*[!0-9]*|0) cores=1 ;;
+esac
+jobs=${TEST_JOBS:-$((cores + 1))}
 case $jobs in
     ''|*[!0-9]*|0) jobs=1 ;;
 esac

@@ -21,7 +21,7 @@
 
 #define STATUS_TIMED_OUT 124
 #define STATUS_SIGNAL_BASE 128
-#define POLL_NS 10000000L /* look at the child every 10 ms */
+#define POLL_MAX_NS 10000000L /* look at the child at least every 10 ms */
 
 static char *read_all(FILE *fp)
 {
@@ -90,6 +90,7 @@ ShellResult run_shell(const char *dir, int timeout_seconds, const char *fmt, ...
     struct timespec start, now;
     clock_gettime(CLOCK_MONOTONIC, &start);
     ShellResult r = {0, NULL};
+    long sleep_ns = 100000; /* starts at 0.1 ms, doubling: most commands are short */
     for (;;) {
         int st;
         pid_t w = waitpid(pid, &st, WNOHANG);
@@ -107,8 +108,9 @@ ShellResult run_shell(const char *dir, int timeout_seconds, const char *fmt, ...
             r.status = STATUS_TIMED_OUT;
             break;
         }
-        struct timespec pause = {0, POLL_NS};
+        struct timespec pause = {0, sleep_ns};
         nanosleep(&pause, NULL);
+        sleep_ns = sleep_ns * 2 > POLL_MAX_NS ? POLL_MAX_NS : sleep_ns * 2;
     }
     r.output = read_all(out);
     fclose(out);

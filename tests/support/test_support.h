@@ -62,7 +62,9 @@ void run_result_free(RunResult *r);
 /* $BIN_DIR (the lessons' executables) as an absolute path, for a command run
  * in another directory (shell.h). */
 const char *abs_bin_dir(void);
-/* "$TEST_OUTPUT/tmp/<name>", created empty (removed first if it existed). */
+/* "$TEST_OUTPUT/tmp/<name>", created empty (removed first if it existed).
+ * The test programs run side by side (make test): a name one of them uses,
+ * no other may (a lesson's name alone, say, in two of them). */
 const char *test_dir(const char *name);
 /* A path inside a directory: static buffer rotation, valid for a few calls. */
 const char *path_join(const char *dir, const char *file);

@@ -21,7 +21,8 @@
 #               mark the block sh or console.
 #
 # The copy: the files git knows (tracked and new, not ignored) and BUILD_DIR
-# (default build) as its build/, times kept, so that nothing rebuilds; then
+# (default build) as its build/, times kept, so that nothing rebuilds (less
+# what no command run here reads: other builds' directories, test outputs); then
 # `make run` there, as a reader would have done, so out/ holds every lesson's
 # picture. Each page's commands run in order, from the top of the copy.
 #
@@ -128,7 +129,9 @@ else
 fi
 mkdir -p "$tree/build"
 (cd "$build" && tar -cf - --exclude=./test-output --exclude=./handout --exclude=./grade \
-    --exclude=./sanitize --exclude=./fuzz --exclude=./compile-commands --exclude=./bench .) |
+    --exclude=./sanitize --exclude=./fuzz --exclude=./compile-commands --exclude=./bench \
+    --exclude=./tsan --exclude=./grade-check --exclude=./wasm --exclude=./site \
+    --exclude=./site-student --exclude=./site-node .) |
     tar -xf - -C "$tree/build" || exit 1
 unset MAKEFLAGS MAKELEVEL MFLAGS BUILD OPT LESSON TEST TEST_FILTER FROM TO ONLY DEST \
     TIME_LIMIT SECONDS FUZZ UPDATE_EXPECTED

@@ -94,7 +94,9 @@ static void every_allocation_that_fails_gives_one_error_line_or_the_same_picture
     const char *bin = abs_bin_dir();
     for (size_t c = 0; c < sizeof CASES / sizeof CASES[0]; c++) {
         const Case *k = &CASES[c];
-        char *dir = strdup(test_dir(k->lesson)), *ref = strdup(test_dir("alloc_reference"));
+        char name[128]; /* not the lesson's bare name: test_out_of_memory's, in a test run beside */
+        snprintf(name, sizeof name, "alloc_%s", k->lesson);
+        char *dir = strdup(test_dir(name)), *ref = strdup(test_dir("alloc_reference"));
         ShellResult r = run_shell(ref, 60, "TOP=%s && FAIL_ALLOC_COUNT=count LD_PRELOAD=%s exec %s/%s %s%s >/dev/null",
                                   top, library, bin, k->lesson, k->args, output_flags(k));
         if (r.status != 0)

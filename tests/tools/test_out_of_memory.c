@@ -36,7 +36,9 @@ static int runs_under_limits(const char *lesson, const char *reason)
     if (getenv("ASAN_OPTIONS"))
         skip();
     const char *bin = abs_bin_dir();
-    const char *dir = test_dir(lesson);
+    char name[128]; /* not the lesson's bare name: test_alloc_failure's, in a test run beside */
+    snprintf(name, sizeof name, "oom_%s", lesson);
+    const char *dir = test_dir(name);
     int with_reason = 0;
     for (size_t i = 0; i < sizeof LIMITS_MB / sizeof LIMITS_MB[0]; i++) {
         ShellResult r = run_shell(dir, 120,
