@@ -3,8 +3,10 @@
  * are kept: each waits for the next work, spinning a moment before it
  * sleeps, as a thread asleep may take 50 microseconds or more to wake and
  * fast_finish hands out two works one after the other (the held faces'
- * set-up, then the tiles). A thread not started leaves its share to the
- * calling thread; the browser's build, which has no threads, draws so. */
+ * set-up, then the tiles); the calling thread, its share done, spins a
+ * moment too before it sleeps till the others are done. A thread not
+ * started leaves its share to the calling thread; the browser's build,
+ * which has no threads, draws so. */
 #include "engine.h"
 
 #include <pthread.h>
@@ -23,7 +25,7 @@ struct Pool {
     pthread_mutex_t lock;
     pthread_cond_t go, done; /* work handed out; the last share done */
     atomic_uint round;       /* one more for each work handed out */
-    int busy;                /* threads not done with this round's shares */
+    atomic_int busy;         /* threads not done with this round's shares */
     bool quit, refused;      /* refused: a thread could not start (none is tried again) */
     void *(*run)(void *); char *args; size_t size; int n; /* the round's work */
     int workers; Worker worker[POOL_MAX]; /* started: threads 1 .. workers */
@@ -60,7 +62,7 @@ static void *work(void *arg)
             continue;
         run(share);
         pthread_mutex_lock(&p->lock);
-        if (--p->busy == 0)
+        if (atomic_fetch_sub(&p->busy, 1) == 1)
             pthread_cond_signal(&p->done);
         pthread_mutex_unlock(&p->lock);
     }
@@ -73,7 +75,7 @@ static Pool *pool_new(void) /* no thread yet; NULL: out of memory */
         return NULL;
     pthread_mutex_init(&p->lock, NULL);
     pthread_cond_init(&p->go, NULL), pthread_cond_init(&p->done, NULL);
-    atomic_init(&p->round, 0);
+    atomic_init(&p->round, 0), atomic_init(&p->busy, 0);
     return p;
 }
 
@@ -93,7 +95,8 @@ void run_threads(Pool **pool, int n, void *(*run)(void *), void *args, size_t si
         helped = n - 1;
     if (helped > 0) {
         pthread_mutex_lock(&p->lock);
-        p->run = run, p->args = args, p->size = size, p->n = helped + 1, p->busy = helped;
+        p->run = run, p->args = args, p->size = size, p->n = helped + 1;
+        atomic_store(&p->busy, helped);
         atomic_fetch_add(&p->round, 1);
         pthread_cond_broadcast(&p->go);
         pthread_mutex_unlock(&p->lock);
@@ -101,9 +104,11 @@ void run_threads(Pool **pool, int n, void *(*run)(void *), void *args, size_t si
     run(args); /* share 0 */
     for (int k = helped + 1; k < n; k++) /* no thread for them: here, in order */
         run((char *)args + (size_t)k * size);
-    if (helped > 0) {
+    if (helped > 0) { /* spinning a moment first: the others are near done */
+        for (int i = 0; i < SPINS && atomic_load(&p->busy) > 0; i++)
+            pause_a_moment();
         pthread_mutex_lock(&p->lock);
-        while (p->busy > 0)
+        while (atomic_load(&p->busy) > 0)
             pthread_cond_wait(&p->done, &p->lock);
         pthread_mutex_unlock(&p->lock);
     }
