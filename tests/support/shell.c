@@ -19,9 +19,9 @@
 #include <time.h>
 #include <unistd.h>
 
-#define STATUS_TIMED_OUT 124
+#define STATUS_TIMED_OUT 124 /* what timeout(1) reports */
 #define STATUS_SIGNAL_BASE 128
-#define POLL_MAX_NS 10000000L /* look at the child at least every 10 ms */
+#define POLL_MAX_NS 10000000L /* wait_child looks at the child at least every 10 ms */
 
 static char *read_all(FILE *fp)
 {
@@ -87,34 +87,35 @@ ShellResult run_shell(const char *dir, int timeout_seconds, const char *fmt, ...
         run_child(dir, command, out);
     setpgid(pid, pid);
 
+    ShellResult r = {wait_child(pid, timeout_seconds, true), NULL};
+    r.output = read_all(out);
+    fclose(out);
+    return r;
+}
+
+int wait_child(pid_t pid, int timeout_seconds, bool group)
+{
     struct timespec start, now;
     clock_gettime(CLOCK_MONOTONIC, &start);
-    ShellResult r = {0, NULL};
-    long sleep_ns = 100000; /* starts at 0.1 ms, doubling: most commands are short */
+    long sleep_ns = 100000;
     for (;;) {
         int st;
         pid_t w = waitpid(pid, &st, WNOHANG);
-        if (w == pid) {
-            r.status = WIFEXITED(st) ? WEXITSTATUS(st) : STATUS_SIGNAL_BASE + WTERMSIG(st);
-            break;
-        }
+        if (w == pid)
+            return WIFEXITED(st) ? WEXITSTATUS(st) : STATUS_SIGNAL_BASE + WTERMSIG(st);
         if (w < 0 && errno != EINTR)
-            fail_msg("run_shell: waitpid: %s", strerror(errno));
+            fail_msg("waitpid: %s", strerror(errno));
         clock_gettime(CLOCK_MONOTONIC, &now);
         if (now.tv_sec - start.tv_sec >= timeout_seconds) {
-            kill(-pid, SIGKILL);
+            kill(group ? -pid : pid, SIGKILL);
             while (waitpid(pid, &st, 0) < 0 && errno == EINTR)
                 continue;
-            r.status = STATUS_TIMED_OUT;
-            break;
+            return STATUS_TIMED_OUT;
         }
         struct timespec pause = {0, sleep_ns};
         nanosleep(&pause, NULL);
         sleep_ns = sleep_ns * 2 > POLL_MAX_NS ? POLL_MAX_NS : sleep_ns * 2;
     }
-    r.output = read_all(out);
-    fclose(out);
-    return r;
 }
 
 void shell_result_free(ShellResult *r)

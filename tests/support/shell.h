@@ -13,6 +13,9 @@
 #ifndef SHELL_H
 #define SHELL_H
 
+#include <stdbool.h>
+#include <sys/types.h>
+
 typedef struct {
     int status;   /* exit status, 128 + N if signal N killed it, 124 on timeout */
     char *output; /* stdout and stderr, in the order they were written */
@@ -24,5 +27,11 @@ ShellResult run_shell(const char *dir, int timeout_seconds, const char *fmt, ...
 #endif
     ;
 void shell_result_free(ShellResult *r);
+
+/* Waits for child pid (run_shell's, run_program's): its exit status, 128 + N
+ * if signal N killed it. After timeout_seconds it is killed, with the process
+ * group it leads when group: 124. It is looked at 0.1 ms after the start,
+ * then twice as long after each look, at least every 10 ms: most are short. */
+int wait_child(pid_t pid, int timeout_seconds, bool group);
 
 #endif

@@ -25,6 +25,7 @@
 #include <unistd.h>
 
 #include "harness/file.h"
+#include "shell.h" /* wait_child */
 
 #define PATH_BUF 4096
 #define TEXT_FILE_MAX (1 << 22) /* read_text: 4 MiB */
@@ -32,9 +33,6 @@
 
 /* run_program: the time a lesson may take before it counts as hung. */
 #define RUN_TIMEOUT_SECONDS 60
-#define STATUS_TIMED_OUT 124 /* what timeout(1) reports */
-#define STATUS_SIGNAL_BASE 128
-#define POLL_MAX_NS 10000000L /* the wait polls at most every 10 ms */
 
 /* The environment the Makefile's test target sets, with its defaults. */
 static const char *env_or(const char *name, const char *fallback)
@@ -287,32 +285,6 @@ static void exec_child(const char *path, char **argv, FILE *out, FILE *err, int 
     _exit(127);
 }
 
-/* Waits for the child, killing it after RUN_TIMEOUT_SECONDS. */
-static int wait_with_timeout(pid_t pid)
-{
-    struct timespec start, now;
-    clock_gettime(CLOCK_MONOTONIC, &start);
-    long sleep_ns = 100000; /* starts at 0.1 ms: most runs are short */
-    for (;;) {
-        int st;
-        pid_t r = waitpid(pid, &st, WNOHANG);
-        if (r == pid)
-            return WIFEXITED(st) ? WEXITSTATUS(st) : STATUS_SIGNAL_BASE + WTERMSIG(st);
-        if (r < 0 && errno != EINTR)
-            fail_msg("waitpid failed: %s", strerror(errno));
-        clock_gettime(CLOCK_MONOTONIC, &now);
-        if (now.tv_sec - start.tv_sec >= RUN_TIMEOUT_SECONDS) {
-            kill(pid, SIGKILL);
-            while (waitpid(pid, &st, 0) < 0 && errno == EINTR)
-                continue;
-            return STATUS_TIMED_OUT;
-        }
-        struct timespec pause = {0, sleep_ns};
-        nanosleep(&pause, NULL);
-        sleep_ns = sleep_ns * 2 > POLL_MAX_NS ? POLL_MAX_NS : sleep_ns * 2;
-    }
-}
-
 static RunResult run_in(const char *dir, const char *program, const char *const *args)
 {
     const char *path = path_join(dir, program);
@@ -344,7 +316,7 @@ static RunResult run_in(const char *dir, const char *program, const char *const 
     close(report[0]);
 
     RunResult r;
-    r.status = wait_with_timeout(pid);
+    r.status = wait_child(pid, RUN_TIMEOUT_SECONDS, false);
     r.out = slurp(out);
     r.err = slurp(err);
     fclose(out);

@@ -60,8 +60,8 @@ typedef struct {
 } Mistake;
 
 /* docs/teaching.md, "The usual mistakes": each made on purpose, with the
- * tests that must catch it and no other. A run of the tests costs seconds, so a quick
- * set runs every time: lesson 01's (its tests take a second),
+ * tests that must catch it and no other. A run of the tests costs seconds,
+ * so a quick set runs every time: lesson 01's (its tests take a second),
  * lesson 02's inverted test, lesson 03's linear z, and lesson 04's two
  * one-character depth-test mistakes, whose lists hold no coverage test:
  * coverage is read from the fragments tested, so a wrong comparison costs
