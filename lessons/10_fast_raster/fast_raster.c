@@ -309,8 +309,8 @@ bool fast_finish(Target *t, LessonState *s, Error *err)
     for (int i = 0; th && i < nthreads; i++)
         th[i].work = &work, tile_work_begin(&th[i].tw, t, s);
     if (th) /* this thread draws too */
-        run_threads(&fr->pool, nthreads, draw_tiles, th, sizeof *th);
-    for (int i = 0; th && i < nthreads; i++)
+        run_threads(&fr->pool, imin(nthreads, work.ntiles), draw_tiles, th, sizeof *th);
+    for (int i = 0; th && i < nthreads; i++) /* a share not run (no tile left) adds nothing */
         tile_work_end(&th[i].tw);
     bins_empty(b);
     free(th);
