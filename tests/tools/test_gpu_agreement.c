@@ -22,6 +22,9 @@
  *     pixels where either shows a decal show the same face on at least 99.5%
  *     of them (glPolygonOffset, glPolygonOffsetClamp on the GPU); without bias
  *     both fight, each showing the decals on a similar share of their pixels.
+ *   - docs/tools.md's table of `make gpu-check` quotes, for each lesson and
+ *     scene compared above, what is measured here: the covered pixels, the
+ *     share of the same face and both depths, as the page rounds them.
  * The agreement is counted here, from the pictures, not by gpu_reference. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -286,6 +289,105 @@ static double depth_limit(int l, const char *scene)
     return strcmp(scene, "grazing") == 0 ? DEPTH_GRAZING : DEPTH_BAR;
 }
 
+/* ---- docs/tools.md's table of `make gpu-check`, against what is measured here ----
+ *
+ * A row "| 03 | crowd | 266185 | 99.9966% | 9.8e-5 | 1.5e-6 |" or, for lessons
+ * 04 and 05 alike, "| 04, 05 | crowd | ...": the covered pixels exactly, the
+ * same face to 4 decimals ("100%" for all of them), each depth to 2
+ * significant digits. Every row must be met by each lesson it names. */
+#define PAGE "docs/tools.md"
+#define MAX_ROWS 64
+#define ROW_CELLS 6
+
+typedef struct { char cell[ROW_CELLS + 1][64]; int met; int lessons; } PageRow;
+static PageRow rows[MAX_ROWS];
+static int n_rows = -1;
+
+/* The cells of a table line "| a | b |", their spaces trimmed; how many. */
+static int cells_of(const char *line, char cell[][64], int max)
+{
+    int n = 0;
+    const char *c = line + 1; /* past the first '|' */
+    for (const char *bar; n < max && (bar = strchr(c, '|')) && bar < strchr(c, '\n'); c = bar + 1) {
+        const char *a = c, *b = bar;
+        while (a < b && *a == ' ')
+            a++;
+        while (b > a && b[-1] == ' ')
+            b--;
+        snprintf(cell[n++], 64, "%.*s", (int)(b - a), a);
+    }
+    return n;
+}
+
+static void read_page_rows(void)
+{
+    n_rows = 0;
+    char *text = read_text(PAGE);
+    char *table = strstr(text, "\n| lesson | scene | covered pixels |");
+    if (!table)
+        fail_msg(PAGE " has no table \"| lesson | scene | covered pixels | ...\"");
+    for (char *line = strchr(table + 1, '\n') + 1; *line == '|'; line = strchr(line, '\n') + 1) {
+        PageRow r = {0};
+        int n = cells_of(line, r.cell, ROW_CELLS + 1);
+        if (strncmp(r.cell[0], "---", 3) == 0)
+            continue;
+        if (n != ROW_CELLS || n_rows == MAX_ROWS)
+            fail_msg(PAGE ": a row of the gpu-check table is not %d cells: %.80s", ROW_CELLS, line);
+        r.lessons = 1 + (strchr(r.cell[0], ',') != NULL);
+        rows[n_rows++] = r;
+    }
+    free(text);
+    if (n_rows == 0)
+        fail_msg(PAGE ": the gpu-check table has no rows");
+}
+
+/* d as the page writes it: gpu-check prints three significant digits
+ * ("1.95e-07"), the page rounds those to two, half up ("2.0e-7"). */
+static void page_depth(double d, char out[32])
+{
+    char e[32];
+    snprintf(e, sizeof e, "%.2e", d); /* the three digits gpu-check prints */
+    int a = 0, b = 0, c = 0, exponent = 0;
+    if (sscanf(e, "%1d.%1d%1de%d", &a, &b, &c, &exponent) != 4)
+        fail_msg("cannot read %s as a depth", e);
+    int two = (100 * a + 10 * b + c + 5) / 10; /* 10 .. 100 */
+    if (two == 100)
+        two = 10, exponent++;
+    snprintf(out, 32, "%d.%de%d", two / 10, two % 10, exponent % 1000);
+}
+
+/* The row of lesson (its two digits) on scene, checked against a and snapped. */
+static void expect_page_row(const char *lesson, const char *scene, const Agreement *a,
+                            const Agreement *snapped)
+{
+    if (n_rows < 0)
+        read_page_rows();
+    char covered[32], same[32], depth[32], depth_snapped[32];
+    snprintf(covered, sizeof covered, "%ld", a->covered);
+    snprintf(same, sizeof same, "%.4f%%", 100.0 * (double)a->same / (double)a->covered);
+    if (a->same == a->covered)
+        snprintf(same, sizeof same, "100%%");
+    page_depth(a->max_rel, depth);
+    page_depth(snapped->max_rel, depth_snapped);
+    for (int i = 0; i < n_rows; i++) {
+        PageRow *r = &rows[i];
+        char number[3] = {lesson[0], lesson[1], '\0'};
+        if (strcmp(r->cell[1], scene) != 0 || !strstr(r->cell[0], number))
+            continue;
+        const char *want[ROW_CELLS - 2] = {covered, same, depth, depth_snapped};
+        static const char *const column[] = {"covered pixels", "same face", "depth",
+                                             "depth, --snap"};
+        for (int k = 0; k < ROW_CELLS - 2; k++)
+            if (strcmp(r->cell[k + 2], want[k]) != 0)
+                fail_msg(PAGE ", the gpu-check table, lesson %s on %s: %s is %s on the page, "
+                         "%s measured", r->cell[0], scene, column[k], r->cell[k + 2], want[k]);
+        r->met++;
+        return;
+    }
+    fail_msg(PAGE ", the gpu-check table: no row for lesson %.2s on %s (measured: %s covered, "
+             "%s same face, depth %s, %s)", lesson, scene, covered, same, depth, depth_snapped);
+}
+
 static void lessons_agree_with_the_gpu(void **state)
 {
     (void)state;
@@ -332,9 +434,15 @@ static void lessons_agree_with_the_gpu(void **state)
                          "%.3g relative (at most %g)", lesson, scene, snapped.max_rel,
                          DEPTH_SNAPPED);
             inside_seen = inside_seen || (l == 2 && strcmp(scene, "inside") == 0);
+            expect_page_row(lesson, scene, &a, &snapped);
         }
     }
     assert_true(inside_seen); /* the scene of the bar: lesson 05 on inside was compared */
+    for (int i = 0; i < n_rows; i++)
+        if (rows[i].met != rows[i].lessons)
+            fail_msg(PAGE ", the gpu-check table: the row of lesson %s on %s was met by %d "
+                     "lessons, not %d", rows[i].cell[0], rows[i].cell[1], rows[i].met,
+                     rows[i].lessons);
 }
 
 /* ---- Lesson 07: depth bias against glPolygonOffset ----------------------- */
