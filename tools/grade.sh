@@ -329,21 +329,21 @@ for lesson in "$@"; do
         if [ "$lim" -le 0 ]; then
             : >"$out.log"; echo "budget 0" >"$out.verdict"; exit 0
         fi
-        d=$(mktemp -d "$GRADE_PRIVATE/run.XXXXXXXX") || exit 0
+        # Its own TEST_OUTPUT: tests of one program run side by side here,
+        # and their scratch files must not meet. Its nonce and result files
+        # in a directory of its own under GRADE_PRIVATE (removed with it).
+        tout="$GRADE_OUTPUT/$bin.$name"
+        d="$GRADE_PRIVATE/$GRADE_LESSON.$bin.$name"
+        if [ -e "$tout" ] || [ -L "$tout" ]; then rm -rf "$tout"; fi
+        mkdir -p "$d" "$tout" || exit 0
         set -- $(od -An -N16 -tx1 /dev/urandom) # 16 bytes as words "3f" "a0" ...
         nonce=""
         for byte in "$@"; do nonce=$nonce$byte; done
         echo "$nonce" >"$d/n"
-        # Its own TEST_OUTPUT: tests of one program run side by side here,
-        # and their scratch files must not meet.
-        tout="$GRADE_OUTPUT/$bin.$name"
-        if [ -e "$tout" ] || [ -L "$tout" ]; then rm -rf "$tout"; fi
-        mkdir -p "$tout"
         exe="$GRADE_BUILD/tests/$GRADE_LESSON/$bin"
         if [ ! -x "$exe" ]; then
             echo "its test program, $bin, did not build (the compiler'"'"'s messages are with the score)" >"$out.log"
             echo "unfinished 127 $lim $wall" >"$out.verdict"
-            rm -rf "$d"
             exit 0
         fi
         # In a sandbox: a slot of its own (at most GRADE_JOBS run at once, so
@@ -376,8 +376,11 @@ for lesson in "$@"; do
             sh "$GRADE_SANDBOX" cleanup "$slot"
             rmdir "$GRADE_PRIVATE/slot.$slot"
         fi
-        r=$(cat "$d/r" 2>/dev/null)
-        rm -rf "$d"
+        # What the test framework wrote: one line, or it is no verdict.
+        r=""
+        if [ -f "$d/r" ]; then
+            { IFS= read -r r; IFS= read -r more && r=""; } <"$d/r"
+        fi
         case $GRADE_MODE in
         self)
             if [ "$r" = "$nonce passed $name" ] && [ "$st" -eq 0 ]; then v=pass
@@ -413,17 +416,20 @@ for lesson in "$@"; do
             { v=unfinished; st=127; lim=$limit; wall=$((3 * limit)); }
         log="$ldir/run/$bin.$name.log"
         case $passed in *" $name "*) continue ;; esac
-        # Bytes that are not plain text (and are not valid UTF-8 in JSON) as "?".
-        # At most its first and last 3000 bytes, whatever the size of the log
-        # (a debug print per fragment writes gigabytes): head and tail read
-        # no more than that.
+        # NUL and the bytes that are not plain text (and are not valid UTF-8
+        # in JSON) as "?". At most its first and last 3000 bytes, whatever the
+        # size of the log (a debug print per fragment writes gigabytes): head
+        # and tail read no more than that.
         size=$(wc -c <"$log" 2>/dev/null || echo 0)
+        shown="$ldir/out/$bin/$name.out"
         if [ "$size" -gt 6000 ]; then
             { head -c 3000 "$log"; printf '\n[... %s bytes of output left out ...]\n' $((size - 6000))
-              tail -c 3000 "$log"; } | LC_ALL=C tr -d '\000'
+              tail -c 3000 "$log"; } | LC_ALL=C tr '\000\200-\377' '?' >"$shown"
         elif [ -f "$log" ]; then
-            LC_ALL=C tr -d '\000' <"$log"
-        fi | LC_ALL=C tr '\200-\377' '?' >"$ldir/out/$bin/$name.out"
+            LC_ALL=C tr '\000\200-\377' '?' <"$log" >"$shown"
+        else
+            : >"$shown"
+        fi
         case $v in
             pass|fail) how=$v ;;
             budget) how=crash

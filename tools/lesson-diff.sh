@@ -40,14 +40,24 @@ clean=$(mktemp -d)
 trap 'rm -rf "$clean"' EXIT
 # A lesson's files are its own and those it inherits (tools/lesson-tree.sh),
 # each under the lesson's name, where the build links it.
+replaced=" $(replaced_file | tr '\n' ' ') "
 for d in "$from" "$to"; do
     mkdir -p "$clean/$d"
     sh tools/lesson-tree.sh list "${d#lessons/}" >"$clean/files" || exit 2
+    # The files at the top of the lesson, each under its name: in one awk
+    # those named as their source is (every file the lesson holds, every
+    # file it inherits: lesson-tree.sh check), one awk each for any other.
+    srcs=""
     while read -r rel src; do
         case $rel in */*) continue ;; esac
-        if [ "$d" = "$from" ] && replaced_file | grep -qx "$rel"; then continue; fi
-        awk -v mode=clean -f "$regions" "$src" >"$clean/$d/$rel"
+        if [ "$d" = "$from" ]; then
+            case $replaced in *" $rel "*) continue ;; esac
+        fi
+        if [ "${src##*/}" = "$rel" ]; then srcs="$srcs $src"
+        else awk -v mode=clean -f "$regions" "$src" >"$clean/$d/$rel" || exit 2; fi
     done <"$clean/files"
+    # shellcheck disable=SC2086 # the sources, one word each
+    [ -z "$srcs" ] || awk -v mode=clean -v into="$clean/$d" -f "$regions" $srcs || exit 2
     rm -f "$clean/files"
 done
 cd "$clean"

@@ -107,14 +107,28 @@ assemble() {
         [ $same -eq 0 ] || cp -p "$out/$name/.files" "$out/.files.$name"
         rm -rf "${out:?}/$name"
         mkdir -p "$out/$name"
-        # "<path> <target>" -> mkdir and ln -s with a path up to the top.
-        echo "$want" | awk -v lesson="$out/$name" 'NF == 2 {
-            link = lesson "/" $1
-            n = split(link, part, "/"); up = ""
-            for (i = 1; i < n; i++) if (part[i] != "" && part[i] != ".") up = up "../"
-            dir = link; sub(/\/[^\/]*$/, "", dir)
-            printf "mkdir -p \"%s\" && ln -s \"%s%s\" \"%s\" || exit 1\n", dir, up, $2, link
-        }' | sh || { echo "$prog: error: cannot make the links under $out/$name" >&2; exit 1; }
+        # "<path> <target>" -> ln -s with a path up to the top: one mkdir and
+        # one ln a directory (ln -s TARGET... DIR names each link after its
+        # target), one ln of its own for a link named otherwise.
+        echo "$want" | awk -v lesson="$out/$name" '
+            function base(p) { sub(/.*\//, "", p); return p }
+            NF == 2 {
+                link = lesson "/" $1
+                n = split(link, part, "/"); up = ""
+                for (i = 1; i < n; i++) if (part[i] != "" && part[i] != ".") up = up "../"
+                dir = link; sub(/\/[^\/]*$/, "", dir)
+                if (!(dir in targets)) { dirs[++ndirs] = dir; targets[dir] = "" }
+                if (base($1) == base($2)) targets[dir] = targets[dir] " \"" up $2 "\""
+                else others[dir] = others[dir] " && ln -s \"" up $2 "\" \"" link "\""
+            }
+            END {
+                for (k = 1; k <= ndirs; k++) {
+                    dir = dirs[k]
+                    printf "mkdir -p \"%s\"", dir
+                    if (targets[dir] != "") printf " && ln -s%s \"%s/\"", targets[dir], dir
+                    printf "%s || exit 1\n", others[dir]
+                }
+            }' | sh || { echo "$prog: error: cannot make the links under $out/$name" >&2; exit 1; }
         # The same list keeps its time: only a new one rebuilds the lesson.
         if [ $same -eq 1 ]; then mv "$out/.files.$name" "$out/$name/.files"
         else echo "$want" >"$out/$name/.files"; fi

@@ -10,6 +10,8 @@
 # ones before it are done: the report reads as if they had run one by one.
 # The slowest binaries of the last run (their seconds are kept in
 # $TEST_OUTPUT/test-times) start first, so that no long one starts last.
+# Each binary, when done, writes its index into a pipe that this script
+# reads: it sleeps until one is done, and starts no process to wait.
 set -u
 cores=$(nproc 2>/dev/null || getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)
 case $cores in
@@ -43,38 +45,53 @@ awk -v times="$times_file" '
     sort -s -k1,1nr | cut -d' ' -f2- >"$work/start"
 
 # One binary: its output into <index>.log, its exit status into <index>.status
-# (written last, by a rename: it says the log is complete), its seconds.
-# shellcheck disable=SC2016 # expanded by the inner sh
+# (written last, by a rename: it says the log is complete), its seconds; then
+# its index into the pipe "done". When every binary has run, "end".
+# The pipe is held open for reading and writing (3<>): opening it never
+# blocks, and a read waits for a line rather than finding the end of a file.
+mkfifo "$work/done" || exit 1
+exec 3<>"$work/done"
 list_out >"$work/out-before"
-[ $# -gt 0 ] && xargs -n 2 -P "$jobs" sh -c '
-    start=$(date +%s)
-    "$2" >"$0/$1.log" 2>&1
-    echo $? >"$0/$1.status.tmp"
-    echo "$(($(date +%s) - start)) $2" >"$0/$1.time"
-    mv "$0/$1.status.tmp" "$0/$1.status"' "$work" <"$work/start" &
+# shellcheck disable=SC2016 # expanded by the inner sh
+{
+    [ $# -gt 0 ] && xargs -n 2 -P "$jobs" sh -c '
+        start=$(date +%s)
+        "$2" >"$0/$1.log" 2>&1
+        echo $? >"$0/$1.status.tmp"
+        echo "$(($(date +%s) - start)) $2" >"$0/$1.time"
+        mv "$0/$1.status.tmp" "$0/$1.status"
+        echo "$1" >"$0/done"' "$work" <"$work/start"
+    echo end >"$work/done"
+} 3<&- &
 runner=$!
 
 passed=0
 failed=0
 broken=""
+ended=0
 i=0
 for t in "$@"; do
     i=$((i + 1))
+    # Until binary i is done: a line for each binary that finishes.
     while [ ! -f "$work/$i.status" ]; do
-        kill -0 "$runner" 2>/dev/null || [ -f "$work/$i.status" ] || {
+        if [ "$ended" -eq 1 ] || ! read -r line <&3; then
             echo "run-tests: $t did not run" >&2
             break
-        }
-        sleep 0.1 2>/dev/null || sleep 1
+        fi
+        [ "$line" = end ] && ended=1
     done
     log="$work/$i.log"
-    status=$(cat "$work/$i.status" 2>/dev/null || echo 127)
+    read -r status <"$work/$i.status" 2>/dev/null || status=127
     [ -f "$log" ] && cat "$log"
     [ -f "$log" ] || : >"$log"
     # After a failure: the function each failed test checks, the diff pictures.
     if [ "$status" -ne 0 ]; then sh tools/test-hints.sh "$t" "$log"; fi
-    p=$(sed -n 's/^\[  PASSED  \] \([0-9][0-9]*\) test(s)\.$/\1/p' "$log" | awk '{s+=$1} END {print s+0}')
-    f=$(sed -n 's/^\[  FAILED  \] \([0-9][0-9]*\) test(s), listed below:$/\1/p' "$log" | awk '{s+=$1} END {print s+0}')
+    # cmocka's counts: "[  PASSED  ] N test(s)." and "[  FAILED  ] N test(s), listed below:".
+    read -r p f <<EOF
+$(awk '/^\[  PASSED  \] [0-9]+ test\(s\)\.$/ { p += $4 }
+       /^\[  FAILED  \] [0-9]+ test\(s\), listed below:$/ { f += $4 }
+       END { print p + 0, f + 0 }' "$log")
+EOF
     passed=$((passed + p))
     failed=$((failed + f))
     # A binary that crashed, or failed without cmocka counting it, still fails the run.

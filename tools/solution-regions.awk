@@ -19,7 +19,8 @@
 #   strip    prints the file as the student gets it: each region replaced by
 #            a TODO(student): comment with its hint, then its stub
 #   clean    prints the file as the teacher reads it, without the markers
-#            and the stubs (make diff compares lessons this way)
+#            and the stubs (make diff compares lessons this way); with
+#            -v into=DIR, each file into DIR/<its name> instead
 #   regions  prints "FILE:LINE<TAB>hint" for each region
 #   lines    prints "FILE:LINE<TAB>code" for each line only the solution has:
 #            a line of a region of code (a region of a page only hides a quote
@@ -122,6 +123,7 @@ function first_word_on(line) {
 }
 
 BEGIN {
+    out = "/dev/stdout"
     if (mode == "find")
         while ((getline l < lines) > 0) {
             tab = index(l, "\t")
@@ -142,6 +144,13 @@ FNR == 1 {
         exit 1
     }
     prev_file = FILENAME
+    if (into != "") {
+        if (out != "/dev/stdout") close(out)
+        out = FILENAME
+        sub(/.*\//, "", out)
+        out = into "/" out
+        printf "" > out
+    }
     if (FILENAME ~ /\.md$/) { OPEN = "<!--"; CLOSE = "-->" }
     else { OPEN = "/*"; CLOSE = "*/" }
     state = ""
@@ -202,13 +211,14 @@ FNR == 1 {
     }
 
     if (state == "code") {
-        if (mode == "clean") print line
+        if (mode == "clean") print line > out
         c = code_of(line)
         # Solution lines are those of the code; a page's region only hides a quote.
         if (OPEN == "/*" && significant(c)) { sol_code[++nsol] = c; sol_where[nsol] = FILENAME ":" FNR }
         next
     }
-    if (mode == "strip" || mode == "clean") print line
+    if (mode == "strip") print line
+    if (mode == "clean") print line > out
     outside[code_of(line)] = 1
     if (OPEN == "/*" && t !~ /^(\/\*|\*|\/\/)/) outside_text = outside_text squeeze(code_of(line)) "\n"
 }
