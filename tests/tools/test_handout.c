@@ -6,8 +6,13 @@
  *      lesson's tests fail, and each failure has a hint that names a function
  *      with a TODO(student) in it; every test with points fails (one that
  *      passes without the student's work must be worth 0 in points.txt);
- *   3. the solution regions are put back: make grade runs every test, each
- *      passes, the score is full marks, and every test is in points.txt;
+ *   3. the solution regions are put back: make test runs every test of
+ *      points.txt, each passes, and every test that runs is in points.txt;
+ *      for the first lesson, make grade too: full marks, as a student's
+ *      own grade counts them. (make grade runs each test in a process of
+ *      its own, twice the time of make test: every lesson's solution graded
+ *      that way, judged, is make grade-check's, which CI runs; make grade
+ *      itself, test_grade's, on a made-up lesson.)
  *   4. the mistakes of docs/teaching.md, made on purpose in the solution, fail
  *      exactly the tests that the page says catch them (make test), and the
  *      score the page gives is full marks less those tests' points.
@@ -45,6 +50,8 @@
 
 /* The make options of every build and run here (see main). */
 static char make_opts[64];
+/* The first lesson of the series: its handout is graded by make grade too. */
+static char first_lesson[256];
 
 /* ---- a deliberate mistake, and the tests that must catch it ---- */
 
@@ -589,18 +596,6 @@ static Grade read_grade(const char *build)
     return g;
 }
 
-/* The entry for test `name` of lesson; NULL if there is none. */
-static const JsonValue *grade_entry(const Grade *g, const char *lesson, const char *name)
-{
-    char full[512];
-    snprintf(full, sizeof full, "%s: %s", lesson, name);
-    const JsonValue *tests = json_get(&g->json, "tests");
-    for (size_t i = 0; i < tests->count; i++)
-        if (strcmp(json_get(&tests->items[i], "name")->string, full) == 0)
-            return &tests->items[i];
-    return NULL;
-}
-
 /* ---- the steps ---- */
 
 /* What the handout's lesson asks the student to write, as " name() name2()":
@@ -714,6 +709,45 @@ static double points_of(const char *lesson, int *tests)
     return sum;
 }
 
+/* The tests of tests/<lesson>/points.txt, each with its points, and their sum. */
+typedef struct {
+    int n;
+    char name[1024][256];
+    double points[1024];
+    double full;
+} Points;
+
+static void read_points(const char *lesson, Points *p)
+{
+    char path[PATH_MAX_LEN];
+    snprintf(path, sizeof path, "tests/%s/points.txt", lesson);
+    char *text = read_text(path);
+    p->n = 0;
+    p->full = 0;
+    for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n")) {
+        char name[256];
+        double points;
+        if (line[0] == '#' || sscanf(line, "%255s %lf", name, &points) != 2)
+            continue;
+        if (p->n == 1024)
+            fail_msg("%s: more than 1024 tests", path);
+        snprintf(p->name[p->n], sizeof p->name[0], "%s", name);
+        p->points[p->n++] = points;
+        p->full += points;
+    }
+    free(text);
+    if (p->n == 0 || p->full <= 0)
+        fail_msg("%s gives no test any points", path);
+}
+
+static int points_index(const Points *p, const char *name)
+{
+    for (int i = 0; i < p->n; i++)
+        if (strcmp(p->name[i], name) == 0)
+            return i;
+    return -1;
+}
+
 /* make test in the handout: it fails; every failed test gets a hint line
  * naming one of the functions to write; and every test with points fails
  * (a test that passes without the student's work is worth 0 points). */
@@ -813,7 +847,7 @@ static bool passed_in(const char *output, const char *name, bool *ran)
  * the tests that fail must be exactly m's, and the score, full's less their
  * points, what docs/teaching.md says. That make grade takes a failed test's
  * points, and only its, test_grade checks. */
-static void expect_mistake_caught(const char *h, const Mistake *m, const Grade *full)
+static void expect_mistake_caught(const char *h, const Mistake *m, const Points *full)
 {
     char path[PATH_MAX_LEN * 2];
     snprintf(path, sizeof path, "%s/lessons/%s/%s", h, m->lesson, m->file);
@@ -839,10 +873,8 @@ static void expect_mistake_caught(const char *h, const Mistake *m, const Grade *
     /* Every difference from the list, and the tests that fail now, in one
      * message: what to look at, or to copy into MISTAKES if the change was meant. */
     char unexpected[8192] = "", missed[8192] = "", failing[16384] = "";
-    const JsonValue *tests = json_get(&full->json, "tests");
-    for (size_t i = 0; i < tests->count; i++) { /* every test of the lesson, from its grade */
-        const JsonValue *t = &tests->items[i];
-        const char *name = strchr(json_get(t, "name")->string, ' ') + 1;
+    for (int i = 0; i < full->n; i++) { /* every test of the lesson: all are in points.txt */
+        const char *name = full->name[i];
         bool ran, passed = passed_in(r.output, name, &ran);
         if (!ran)
             fail_msg("make test with %s: %s did not run\n%s", m->mistake, name, r.output);
@@ -854,7 +886,7 @@ static void expect_mistake_caught(const char *h, const Mistake *m, const Grade *
             strcat(strcat(into, "\n  "), name);
         if (!passed && strlen(failing) + strlen(name) + 8 < sizeof failing)
             strcat(strcat(strcat(failing, "\n      \""), name), "\",");
-        double points = json_get(t, "max_score")->number;
+        double points = full->points[i];
         lost += listed ? points : 0;
         score += passed ? points : 0;
     }
@@ -869,13 +901,13 @@ static void expect_mistake_caught(const char *h, const Mistake *m, const Grade *
                  "change was meant", m->mistake, m->lesson);
     }
     for (int k = 0; m->caught_by[k]; k++)
-        if (!grade_entry(full, m->lesson, m->caught_by[k]))
+        if (points_index(full, m->caught_by[k]) < 0)
             fail_msg("%s: no test %s in lesson %s", m->mistake, m->caught_by[k], m->lesson);
     if (lost <= 0)
         fail_msg("%s: its tests are worth no points", m->mistake);
     if (m->page_says) {
         char said[256];
-        snprintf(said, sizeof said, m->page_says, score, full->score);
+        snprintf(said, sizeof said, m->page_says, score, full->full);
         char *guide = read_text("docs/teaching.md");
         bool found = strstr(guide, said) != NULL;
         free(guide);
@@ -974,30 +1006,51 @@ static void handout_round_trip(void **state)
     free_solution_lines(s);
     expect_tests_fail_with_hints(h, lesson);
 
-    /* 3. The solution put back: full marks, every test passed and in points.txt.
-     * Only the files that differ are copied (those with a solution region):
-     * the others keep their times, and make compiles again only what reads
-     * a file that changed, as it would for a student who wrote the regions. */
+    /* 3. The solution put back: every test of points.txt runs and passes, and
+     * every test that runs is in points.txt; for the first lesson make grade
+     * too, full marks. Only the files that differ are copied (those with a
+     * solution region): the others keep their times, and make compiles again
+     * only what reads a file that changed, as it would for a student who
+     * wrote the regions. */
     shell_ok(NULL,
              "cd lessons/%s && find . -type f | while read -r f; do "
              "cmp -s \"$f\" \"%s/lessons/%s/$f\" || "
              "{ mkdir -p \"$(dirname \"%s/lessons/%s/$f\")\" && cp \"$f\" \"%s/lessons/%s/$f\"; } "
              "|| exit 1; done",
              lesson, h, lesson, h, lesson, h, lesson);
-    shell_ok(h, "make %s grade LESSON=%.2s", make_opts, lesson);
-    Grade full = read_grade(build);
-    if (full.max <= 0 || full.score != full.max)
-        fail_msg("make grade with the solution of %s: %g of %g points", lesson, full.score,
-                 full.max);
-    const JsonValue *tests = json_get(&full.json, "tests");
-    for (size_t i = 0; i < tests->count; i++) {
-        const JsonValue *t = &tests->items[i];
-        if (strcmp(json_get(t, "status")->string, "passed") != 0)
-            fail_msg("with the solution, %s failed:\n%s", json_get(t, "name")->string,
-                     json_get(t, "output")->string);
-        if (strstr(json_get(t, "output")->string, "points.txt: counts 0 points"))
-            fail_msg("%s is not in tests/%s/points.txt: every test should be",
-                     json_get(t, "name")->string, lesson);
+    static Points full;
+    read_points(lesson, &full);
+    ShellResult r = shell(h, "make %s test LESSON=%.2s", make_opts, lesson);
+    if (r.status != 0)
+        fail_msg("make test with the solution of %s: status %d\n%s", lesson, r.status, r.output);
+    for (int i = 0; i < full.n; i++) {
+        bool ran, passed = passed_in(r.output, full.name[i], &ran);
+        if (!ran || !passed)
+            fail_msg("with the solution, %s of tests/%s/points.txt %s:\n%s", full.name[i], lesson,
+                     ran ? "failed" : "did not run", r.output);
+    }
+    const char *run = "[ RUN      ] ";
+    for (const char *at = strstr(r.output, run); at; at = strstr(at + 1, run)) {
+        char test[256];
+        if (sscanf(at + strlen(run), "%255[A-Za-z0-9_]", test) == 1 &&
+            points_index(&full, test) < 0)
+            fail_msg("%s is not in tests/%s/points.txt: every test should be", test, lesson);
+    }
+    shell_result_free(&r);
+    if (strcmp(lesson, first_lesson) == 0) {
+        shell_ok(h, "make %s grade LESSON=%.2s", make_opts, lesson);
+        Grade g = read_grade(build);
+        if (g.max != full.full || g.score != g.max)
+            fail_msg("make grade with the solution of %s: %g of %g points (points.txt: %g)",
+                     lesson, g.score, g.max, full.full);
+        const JsonValue *tests = json_get(&g.json, "tests");
+        for (size_t i = 0; i < tests->count; i++) {
+            const JsonValue *t = &tests->items[i];
+            if (strcmp(json_get(t, "status")->string, "passed") != 0)
+                fail_msg("make grade with the solution: %s failed:\n%s",
+                         json_get(t, "name")->string, json_get(t, "output")->string);
+        }
+        json_free(&g.json);
     }
 
     /* 4. Each mistake of docs/teaching.md costs exactly its tests' points. */
@@ -1006,7 +1059,6 @@ static void handout_round_trip(void **state)
     for (size_t k = 0; k < sizeof MISTAKES / sizeof MISTAKES[0]; k++)
         if (strcmp(MISTAKES[k].lesson, lesson) == 0 && (MISTAKES[k].every_run || every_mistake))
             expect_mistake_caught(h, &MISTAKES[k], &full);
-    json_free(&full.json);
 }
 
 /* The exercises at the end of each lesson page: 3 to 5, from a warm-up to a
@@ -1074,6 +1126,8 @@ int main(void)
             snprintf(lessons[n++], sizeof lessons[0], "%s", e->d_name);
     closedir(d);
     qsort(lessons, (size_t)n, sizeof lessons[0], compare_strings);
+    if (n > 0)
+        snprintf(first_lesson, sizeof first_lesson, "%s", lessons[0]);
     for (int i = 0; i < n; i++) {
         snprintf(names[i], sizeof names[0], "exercises_of_%.200s", lessons[i]);
         tests[i] = (struct CMUnitTest){names[i],
