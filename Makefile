@@ -190,7 +190,9 @@ run: $(BINS)
 # Every test runs from the top of the tree, with BIN_DIR naming the lessons'
 # executables; tools/run-tests.sh runs the binaries in parallel (TEST_JOBS
 # at a time, one more than the cores by default), prints their outputs whole and
-# in order, and the final "N passed, M failed".
+# in order, and the final "N passed, M failed". Their scratch, test-output/tmp,
+# is a link into /dev/shm when that can take it (TEST_SCRATCH=dir elsewhere,
+# TEST_SCRATCH= on disk).
 # TEST=name becomes TEST_FILTER, which every test binary hands to cmocka's
 # test filter (tests/support/test_hooks.c): only the tests of that name run.
 test: $(BINS) $(TOOLS) $(TEST_BIN) $(FUZZ_REPLAY) $(FAIL_ALLOC)

@@ -60,7 +60,7 @@ static void every_page_command_runs_as_printed(void **state)
     const char *out = getenv("TEST_OUTPUT");
     if (!out || !*out)
         out = "build/test-output";
-    ShellResult r = run_shell(NULL, TIMEOUT_SECONDS, "sh tests/tools/page_commands.sh '%s' '%s/page-commands'",
+    ShellResult r = run_shell(NULL, TIMEOUT_SECONDS, "sh tests/tools/page_commands.sh '%s' '%s/tmp/page-commands'",
                               build_dir(build, sizeof build), out);
     print_message("%s", r.output);
     if (r.status != 0)
