@@ -122,8 +122,14 @@ function first_word_on(line) {
     return line == " *" || line == ">" || line == "/* TODO(student):" || line == "> **TODO(student):**"
 }
 
+# A line of the file as the teacher reads it (mode=clean): on stdout, or into
+# DIR/<the file's name> with -v into=DIR.
+function clean(line) {
+    if (into == "") print line
+    else print line > out
+}
+
 BEGIN {
-    out = "/dev/stdout"
     if (mode == "find")
         while ((getline l < lines) > 0) {
             tab = index(l, "\t")
@@ -145,7 +151,7 @@ FNR == 1 {
     }
     prev_file = FILENAME
     if (into != "") {
-        if (out != "/dev/stdout") close(out)
+        if (out != "") close(out)
         out = FILENAME
         sub(/.*\//, "", out)
         out = into "/" out
@@ -211,14 +217,14 @@ FNR == 1 {
     }
 
     if (state == "code") {
-        if (mode == "clean") print line > out
+        if (mode == "clean") clean(line)
         c = code_of(line)
         # Solution lines are those of the code; a page's region only hides a quote.
         if (OPEN == "/*" && significant(c)) { sol_code[++nsol] = c; sol_where[nsol] = FILENAME ":" FNR }
         next
     }
     if (mode == "strip") print line
-    if (mode == "clean") print line > out
+    if (mode == "clean") clean(line)
     outside[code_of(line)] = 1
     if (OPEN == "/*" && t !~ /^(\/\*|\*|\/\/)/) outside_text = outside_text squeeze(code_of(line)) "\n"
 }
