@@ -33,8 +33,9 @@ times_file=${TEST_OUTPUT:-build/test-output}/test-times
 # passed, kept after a failure for a look until the next run.
 out_dir=${TEST_OUTPUT:-build/test-output}
 link="$out_dir/tmp"
-if [ -L "$link" ]; then
-    rm -rf "$(readlink "$link")"
+if [ -L "$link" ]; then # the last run's, kept: removed (only a scratch of ours)
+    last=$(readlink "$link")
+    case ${last##*/} in hsr-tests.????????) rm -rf "$last" ;; esac
     rm -f "$link"
 fi
 scratch=""
