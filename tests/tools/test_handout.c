@@ -670,45 +670,6 @@ static void todo_functions(const char *lesson_dir, char *out, size_t size)
     closedir(d);
 }
 
-/* The tests of tests/<lesson>/points.txt worth more than 0 points. */
-static int pointed_tests(const char *lesson, char names[][256], int max)
-{
-    char path[PATH_MAX_LEN];
-    snprintf(path, sizeof path, "tests/%s/points.txt", lesson);
-    char *text = read_text(path);
-    int n = 0;
-    for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n")) {
-        char name[256];
-        double points;
-        if (line[0] == '#' || sscanf(line, "%255s %lf", name, &points) != 2)
-            continue;
-        if (points > 0 && n < max)
-            snprintf(names[n++], 256, "%s", name);
-    }
-    free(text);
-    return n;
-}
-
-/* The sum of the points of tests/<lesson>/points.txt; *tests: its lines. */
-static double points_of(const char *lesson, int *tests)
-{
-    char path[PATH_MAX_LEN];
-    snprintf(path, sizeof path, "tests/%s/points.txt", lesson);
-    char *text = read_text(path);
-    double sum = 0;
-    *tests = 0;
-    for (char *line = strtok(text, "\n"); line; line = strtok(NULL, "\n")) {
-        char name[256];
-        double points;
-        if (line[0] == '#' || sscanf(line, "%255s %lf", name, &points) != 2)
-            continue;
-        sum += points;
-        (*tests)++;
-    }
-    free(text);
-    return sum;
-}
-
 /* The tests of tests/<lesson>/points.txt, each with its points, and their sum. */
 typedef struct {
     int n;
@@ -785,26 +746,29 @@ static void expect_tests_fail_with_hints(const char *h, const char *lesson)
     }
     if (failed == 0)
         fail_msg("make test failed on the handout, but no test did:\n%s", r.output);
-    static char pointed[1024][256];
-    int n = pointed_tests(lesson, pointed, 1024);
-    for (int i = 0; i < n; i++) {
+    static Points points;
+    read_points(lesson, &points);
+    int n = 0; /* the tests with points */
+    for (int i = 0; i < points.n; i++) {
+        if (points.points[i] <= 0)
+            continue;
+        n++;
         char want[300];
-        snprintf(want, sizeof want, "[  FAILED  ] %.255s\n", pointed[i]);
+        snprintf(want, sizeof want, "[  FAILED  ] %.255s\n", points.name[i]);
         if (!strstr(r.output, want))
             fail_msg("%s passes on the untouched handout of %s, yet tests/%s/points.txt gives it "
-                     "points: a student would get them for nothing", pointed[i], lesson, lesson);
+                     "points: a student would get them for nothing", points.name[i], lesson,
+                     lesson);
     }
     /* So every point comes from a test that fails with the stubs in place
      * (the issue asked for at least half): said, with the count of tests. */
-    int listed = 0;
-    double points = points_of(lesson, &listed);
-    if (n == 0 || points <= 0)
+    if (n == 0 || points.full <= 0)
         fail_msg("tests/%s/points.txt gives no test any points", lesson);
     print_message("%s: the %d tests with points (of %d in points.txt) all fail on the untouched "
-                  "handout: all %g points come from them\n", lesson, n, listed, points);
+                  "handout: all %g points come from them\n", lesson, n, points.n, points.full);
     /* The points table of docs/teaching.md says these numbers. */
     char row[256];
-    snprintf(row, sizeof row, "| %.2s | %d | %d | %g |\n", lesson, listed, n, points);
+    snprintf(row, sizeof row, "| %.2s | %d | %d | %g |\n", lesson, points.n, n, points.full);
     char *guide = read_text("docs/teaching.md");
     bool said = strstr(guide, row) != NULL;
     free(guide);
@@ -1077,8 +1041,8 @@ static void exercises_go_from_warm_up_to_challenge_and_a_test_checks_one(void **
     char *end = strstr(section, "\n## ");
     if (end)
         *end = '\0';
-    static char pointed[1024][256];
-    int n_pointed = pointed_tests(lesson, pointed, 1024);
+    static Points points;
+    read_points(lesson, &points);
     int items = 0;
     bool first_is_warm_up = false, last_is_challenge = false, checked = false;
     for (char *line = strtok(section, "\n"); line; line = strtok(NULL, "\n")) {
@@ -1088,10 +1052,10 @@ static void exercises_go_from_warm_up_to_challenge_and_a_test_checks_one(void **
                 first_is_warm_up = strstr(line, "Warm-up") != NULL;
             last_is_challenge = strstr(line, "Challenge") != NULL;
         }
-        for (int i = 0; i < n_pointed; i++) {
+        for (int i = 0; i < points.n; i++) {
             char quoted[300];
-            snprintf(quoted, sizeof quoted, "`%.255s`", pointed[i]);
-            checked |= strstr(line, quoted) != NULL;
+            snprintf(quoted, sizeof quoted, "`%.255s`", points.name[i]);
+            checked |= points.points[i] > 0 && strstr(line, quoted) != NULL;
         }
     }
     free(text);
