@@ -192,7 +192,7 @@ run: $(BINS)
 # at a time, one more than the cores by default), prints their outputs whole and
 # in order, and the final "N passed, M failed". Their scratch, test-output/tmp,
 # is a link into /dev/shm when that can take it (TEST_SCRATCH=dir elsewhere,
-# TEST_SCRATCH= on disk).
+# TEST_SCRATCH= on disk), kept after a failure until the next run or make clean.
 # TEST=name becomes TEST_FILTER, which every test binary hands to cmocka's
 # test filter (tests/support/test_hooks.c): only the tests of that name run.
 test: $(BINS) $(TOOLS) $(TEST_BIN) $(FUZZ_REPLAY) $(FAIL_ALLOC)
@@ -240,6 +240,7 @@ reading:
 	@sh tools/reading.sh
 
 clean:
+	@[ ! -f tools/run-tests.sh ] || TEST_OUTPUT=$(BUILD)/test-output sh tools/run-tests.sh --remove-scratch
 	rm -rf $(BUILD) out
 
 # ---- The GPU reference (docs/tools.md) --------------------------------------

@@ -29,15 +29,20 @@ times_file=${TEST_OUTPUT:-build/test-output}/test-times
 # every inode deleted in the last minutes before it gives one out again). On
 # a file system in memory when the machine has one that runs programs and has
 # room (TEST_SCRATCH, /dev/shm by default; TEST_SCRATCH= keeps it on disk):
-# $TEST_OUTPUT/tmp is then a link to it, removed after a run whose tests all
-# passed, kept after a failure for a look until the next run.
+# $TEST_OUTPUT/tmp is then a link to it, removed when the run ends (an
+# interrupt too), but kept after a failure for a look until the next run, or
+# `run-tests.sh --remove-scratch` (make clean).
 out_dir=${TEST_OUTPUT:-build/test-output}
 link="$out_dir/tmp"
-if [ -L "$link" ]; then # the last run's, kept: removed (only a scratch of ours)
-    last=$(readlink "$link")
-    case ${last##*/} in hsr-tests.????????) rm -rf "$last" ;; esac
-    rm -f "$link"
-fi
+remove_kept_scratch() { # the last run's, if kept (only a scratch of ours)
+    if [ -L "$link" ]; then
+        last=$(readlink "$link")
+        case ${last##*/} in hsr-tests.????????) rm -rf "$last" ;; esac
+        rm -f "$link"
+    fi
+}
+remove_kept_scratch
+[ "${1:-}" = --remove-scratch ] && exit 0
 scratch=""
 root=${TEST_SCRATCH-/dev/shm}
 if [ -n "$root" ] && [ -d "$root" ] && [ -w "$root" ] &&
@@ -53,15 +58,16 @@ if [ -n "$root" ] && [ -d "$root" ] && [ -w "$root" ] &&
     fi
 fi
 # A make test that a test runs (in a tree of its own, under this scratch) keeps
-# its scratch where it is.
+# its scratch where it is (run_shell, tests/support/shell.c, says so too).
 TEST_SCRATCH=
 export TEST_SCRATCH
+keep=0 # 1: the scratch stays (a failure)
 
 work=$(mktemp -d) || exit 1
 # out/ is the student's: a test writes its pictures in a directory of its own.
 # What out/ holds before is compared with what it holds after.
 list_out() { find out -type f -exec ls -l --time-style=+%s.%N {} + 2>/dev/null | sort; }
-trap 'rm -rf "$work"' EXIT
+trap 'rm -rf "$work"; [ -z "$scratch" ] || [ "$keep" -eq 1 ] || remove_kept_scratch' EXIT
 trap 'exit 130' INT
 trap 'exit 143' TERM
 
@@ -153,13 +159,9 @@ if ! cmp -s "$work/out-before" "$work/out-after"; then
     failed=$((failed + 1))
 fi
 [ -n "$broken" ] && echo "broken test binaries:$broken"
-if [ -n "$scratch" ]; then
-    if [ "$failed" -eq 0 ]; then
-        rm -rf "$scratch"
-        rm -f "$link"
-    else
-        echo "run-tests: the tests' scratch is kept in $scratch ($link) until the next run"
-    fi
+if [ -n "$scratch" ] && [ "$failed" -ne 0 ]; then
+    keep=1
+    echo "run-tests: the tests' scratch is kept in $scratch ($link) until the next run"
 fi
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ] && [ "$passed" -gt 0 ]

@@ -61,6 +61,9 @@ static void run_child(const char *dir, const char *command, FILE *out)
                                      "UPDATE_EXPECTED"};
     for (size_t i = 0; i < sizeof inherited / sizeof inherited[0]; i++)
         unsetenv(inherited[i]);
+    /* A make test in the command keeps its scratch in its own tree, not in
+     * /dev/shm (tools/run-tests.sh): that tree is this test's, removed with it. */
+    setenv("TEST_SCRATCH", "", 1);
     execl("/bin/sh", "sh", "-c", command, (char *)NULL);
     _exit(127);
 }

@@ -9,9 +9,10 @@
  *   - The scratch, $TEST_OUTPUT/tmp: a link into a directory of its own
  *     under TEST_SCRATCH while the tests run (the programs see it, and see
  *     TEST_SCRATCH empty: a make test they run keeps its scratch where it
- *     is); removed after a run whose tests all passed, kept after a failure
- *     until the next run, which removes it; a link someone else made is
- *     never followed. */
+ *     is); removed after a run whose tests all passed and after an
+ *     interrupted one, kept after a failure until the next run, which
+ *     removes it, or `run-tests.sh --remove-scratch` (make clean); a link
+ *     someone else made is never followed. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -34,7 +35,7 @@
 /* A test program: a script in dir that runs body. */
 static const char *program(const char *dir, const char *name, const char *body)
 {
-    char text[2048];
+    char text[8192];
     snprintf(text, sizeof text, "#!/bin/sh\n%s\n", body);
     const char *path = write_text_in(dir, name, text);
     assert_int_equal(0, chmod(path, 0755));
@@ -141,6 +142,33 @@ static void scratch_is_a_link_removed_after_a_pass_kept_after_a_failure(void **s
     r = run_runner(dir, "", writes);
     expect_count(0, r.status, "the run after: exit status");
     expect_count(0, scratches(dir), "scratches left after the run that follows a failure");
+    shell_result_free(&r);
+
+    /* Kept again, then removed by --remove-scratch, as make clean asks. */
+    r = run_runner(dir, "FAIL=1", writes);
+    expect_count(1, scratches(dir), "scratches kept after a failure");
+    shell_result_free(&r);
+    r = run_shell(NULL, TIMEOUT_SECONDS,
+                  "TEST_OUTPUT=%s/out sh tools/run-tests.sh --remove-scratch", dir);
+    expect_count(0, r.status, "run-tests.sh --remove-scratch: exit status");
+    expect_count(0, scratches(dir), "scratches left after --remove-scratch");
+    if (is_link(path_join(dir, "out/tmp")))
+        fail_msg("--remove-scratch left the link out/tmp");
+    shell_result_free(&r);
+
+    /* Stopped (SIGTERM) while a test runs: the scratch goes too. */
+    char started[4096];
+    snprintf(started, sizeof started, "%s", path_join(dir, "started"));
+    char body[4096 + 64];
+    snprintf(body, sizeof body, "touch %s; sleep 2; echo '[  PASSED  ] 1 test(s).'", started);
+    const char *waits = program(dir, "waits", body);
+    r = run_shell(NULL, TIMEOUT_SECONDS,
+                  "mkdir -p %s/scratch && { TEST_OUTPUT=%s/out TEST_SCRATCH=$PWD/%s/scratch "
+                  "sh tools/run-tests.sh %s & } && runner=$! && "
+                  "while [ ! -f %s ]; do sleep 0.05; done && kill -TERM $runner; wait $runner",
+                  dir, dir, dir, waits, started);
+    expect_count(143, r.status, "run-tests.sh stopped by SIGTERM: exit status");
+    expect_count(0, scratches(dir), "scratches left after a run stopped by SIGTERM");
     shell_result_free(&r);
 }
 
