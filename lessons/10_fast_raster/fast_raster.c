@@ -49,29 +49,29 @@ static int64_t edge_max(const EdgeFn *e, int x0, int y0, int w, int h)
 /* p and its edges into the bin of every tile of its box no edge leaves out. */
 static void bin_polygon(Bins *b, Poly *p, const Corner *c, int n, int turn)
 {
-    p->first = (uint32_t)b->nedge;
+    EdgeFn *e = b->edge + b->nedge;
+    uint32_t m = 0; /* its edges */
     for (int k = 0; k < n; k++) {
         int next = k + 1 < n ? k + 1 : 0; /* clockwise: backwards when p turns the other way */
         Corner from = c[turn < 0 ? next : k], to = c[turn < 0 ? k : next];
         if (from.x != to.x || from.y != to.y) /* a corner twice is no edge */
-            b->edge[b->nedge + p->n++] = edge_function(from, to);
+            e[m++] = edge_function(from, to);
     }
-    const EdgeFn *e = b->edge + b->nedge;
-    bool one = p->x0 / TILE_SIZE == (p->x1 - 1) / TILE_SIZE &&
-               p->y0 / TILE_SIZE == (p->y1 - 1) / TILE_SIZE; /* one tile: binned untested */
-    for (int ty = p->y0 / TILE_SIZE; ty <= (p->y1 - 1) / TILE_SIZE; ty++)
-        for (int tx = p->x0 / TILE_SIZE; tx <= (p->x1 - 1) / TILE_SIZE; tx++) {
-            int x0 = imax(p->x0, tx * TILE_SIZE), y0 = imax(p->y0, ty * TILE_SIZE);
-            int w = imin(p->x1, (tx + 1) * TILE_SIZE) - 1 - x0;
-            int h = imin(p->y1, (ty + 1) * TILE_SIZE) - 1 - y0;
+    int x0 = p->x0, x1 = p->x1, y0 = p->y0, y1 = p->y1; /* kept here: a bin's store may alias p */
+    bool one = x0 / TILE_SIZE == (x1 - 1) / TILE_SIZE && y0 / TILE_SIZE == (y1 - 1) / TILE_SIZE;
+    for (int ty = y0 / TILE_SIZE; ty <= (y1 - 1) / TILE_SIZE; ty++)
+        for (int tx = x0 / TILE_SIZE; tx <= (x1 - 1) / TILE_SIZE; tx++) {
+            int left = imax(x0, tx * TILE_SIZE), top = imax(y0, ty * TILE_SIZE);
+            int w = imin(x1, (tx + 1) * TILE_SIZE) - 1 - left;
+            int h = imin(y1, (ty + 1) * TILE_SIZE) - 1 - top;
             bool outside = false;
-            for (uint32_t k = 0; !one && k < p->n && !outside; k++)
-                outside = edge_max(&e[k], x0, y0, w, h) < 0;
+            for (uint32_t k = 0; !one && k < m && !outside; k++) /* one tile: binned untested */
+                outside = edge_max(&e[k], left, top, w, h) < 0;
             Bin *bin = &b->bin[ty * b->tiles_x + tx];
             if (!outside) /* bins_room made room */
                 bin->at[bin->n++] = (uint32_t)b->npoly, bin->work += (long)(w + 1) * (h + 1);
         }
-    b->nedge += p->n;
+    p->first = (uint32_t)b->nedge, p->n = m, b->nedge += m;
     b->poly[b->npoly++] = *p;
 }
 

@@ -28,14 +28,10 @@ bool grow_array(void **items, size_t *cap, size_t need, size_t size)
     return bigger != NULL;
 }
 
-bool bins_room(Bins *b, const Poly *p, int n)
+/* Grows b for p, when bins_room found no room (false: out of memory); a
+ * function apart, so that the check made for each polygon stays small. */
+static __attribute__((noinline, cold)) bool bins_grow(Bins *b, const Poly *p, int n)
 {
-    bool room = b->npoly < b->cap_poly && b->nedge + (size_t)n <= b->cap_edge;
-    for (int ty = p->y0 / TILE_SIZE; room && ty <= (p->y1 - 1) / TILE_SIZE; ty++)
-        for (int tx = p->x0 / TILE_SIZE; room && tx <= (p->x1 - 1) / TILE_SIZE; tx++)
-            room = b->bin[ty * b->tiles_x + tx].n < b->bin[ty * b->tiles_x + tx].cap;
-    if (room) /* as nearly always: nothing to grow */
-        return true;
     void *poly = b->poly, *edge = b->edge;
     bool ok = grow_array(&poly, &b->cap_poly, b->npoly + 1, sizeof *b->poly) &&
               grow_array(&edge, &b->cap_edge, b->nedge + (size_t)n, sizeof *b->edge);
@@ -48,6 +44,15 @@ bool bins_room(Bins *b, const Poly *p, int n)
             bin->at = at;
         }
     return ok;
+}
+
+bool bins_room(Bins *b, const Poly *p, int n)
+{
+    bool room = b->npoly < b->cap_poly && b->nedge + (size_t)n <= b->cap_edge;
+    for (int ty = p->y0 / TILE_SIZE; room && ty <= (p->y1 - 1) / TILE_SIZE; ty++)
+        for (int tx = p->x0 / TILE_SIZE; room && tx <= (p->x1 - 1) / TILE_SIZE; tx++)
+            room = b->bin[ty * b->tiles_x + tx].n < b->bin[ty * b->tiles_x + tx].cap;
+    return room || bins_grow(b, p, n); /* room, as nearly always: nothing grown */
 }
 
 void bins_empty(Bins *b)
