@@ -10,7 +10,10 @@
  * workload_draw (every corner from clip space to the screen, every face into
  * draw_face), then whatever the lesson still holds back drawn; no file I/O.
  * It prints one CSV line per workload (measure.h); tests/bench/run-bench.sh
- * makes the table. Lessons 06
+ * makes the table. For run-bench.sh's cores side by side, BENCH_CONFIG=k
+ * in the environment times only configuration k of a lesson timed in more
+ * than one (bench_setup.h), and BENCH_WALL_CLOCK=1 times every row by the
+ * wall clock. Lessons 06
  * on draw into a unorm24 buffer, standard mapping, with the workload's near
  * and far, as GL's default framebuffer has it. */
 #include <stdio.h>
@@ -78,6 +81,8 @@ static bool measure_workload(const Rasterizer *lesson_rz, Workload *w, int reps,
 #else
     (void)config;
 #endif
+    const char *wall = getenv("BENCH_WALL_CLOCK");
+    wall_clock = wall_clock || (wall && strcmp(wall, "1") == 0);
 #if BENCH_LESSON_NUMBER >= 9
     HierarchicalZ hiz = {0};
     if (!hiz_begin(&hiz, &t, 8, err)) {
@@ -138,6 +143,18 @@ int main(int argc, char **argv)
 #else
     int configs = 1;
 #endif
+    int first = 0; /* BENCH_CONFIG=k: configuration k alone */
+    const char *only = getenv("BENCH_CONFIG");
+    if (only) {
+        char *end;
+        long k = strtol(only, &end, 10);
+        if (*only == '\0' || *end != '\0' || k < 0 || k >= configs) {
+            fprintf(stderr, "%s: error: BENCH_CONFIG: '%s' is not 0 to %d\n", program, only,
+                    configs - 1);
+            return 2;
+        }
+        first = (int)k, configs = first + 1;
+    }
     for (int k = 0; k < WORKLOAD_COUNT; k++) {
         if (any && !chosen[k])
             continue;
@@ -145,7 +162,7 @@ int main(int argc, char **argv)
         Measurement m;
         Error err;
         bool built = workload_build(&w, (WorkloadKind)k, &err), ok = built;
-        for (int c = 0; ok && c < configs; c++) {
+        for (int c = first; ok && c < configs; c++) {
             ok = measure_workload(&BENCH_RASTERIZER, &w, reps, c, &m, &err);
             if (ok)
                 measure_print(stdout, &m);

@@ -11,6 +11,14 @@
 # in CPU time of the process, and llvmpipe_Nt, all cores, by the wall clock),
 # a second table gives each lesson's speed as a multiple of llvmpipe's on the
 # same workload: on one core, of the faster of llvmpipe_0t and llvmpipe_1t.
+# With lesson 10 among them and more than one core, each round also times the
+# cores side by side: lesson 10's one-thread row of fill_back_to_front alone,
+# then in as many copies at once as there are cores, all by the wall clock
+# (bench.c's BENCH_CONFIG and BENCH_WALL_CLOCK). If each copy takes longer
+# than the one alone (cores that share one, or a host running other work),
+# no program's N threads can be N times as fast as its one here: that
+# ceiling, how many times the frames of one alone the copies drew, is
+# printed after the targets.
 # CC and BENCH_CFLAGS, when set, are shown with the machine.
 # Every binary runs BENCH_ROUNDS times (3 unless set), the rounds one after
 # the other, and each row is its round with the least median: on a shared
@@ -39,10 +47,33 @@ case $rounds in
 esac
 all="$out_dir/rounds.csv"
 : >"$all"
+# side_by_side BINARY: rows cores_alone and cores_copy_1 .. cores_copy_N into $all.
+side_by_side() {
+    echo "running $(basename "$1") on fill_back_to_front, alone then $cpus at once ..." >&2
+    BENCH_CONFIG=0 BENCH_WALL_CLOCK=1 "$1" fill_back_to_front | sed 's/^[^,]*,/cores_alone,/' >>"$all"
+    pids=
+    for k in $(seq "$cpus"); do
+        BENCH_CONFIG=0 BENCH_WALL_CLOCK=1 "$1" fill_back_to_front >"$out_dir/copy.$k" &
+        pids="$pids $!"
+    done
+    failed=0
+    for pid in $pids; do
+        wait "$pid" || failed=1
+    done
+    for k in $(seq "$cpus"); do
+        sed "s/^[^,]*,/cores_copy_$k,/" "$out_dir/copy.$k" >>"$all"
+        rm -f "$out_dir/copy.$k"
+    done
+    [ "$failed" = 0 ] || { echo "run-bench.sh: a copy of $(basename "$1") failed" >&2; exit 1; }
+}
 for round in $(seq "$rounds"); do
     for bin in "$@"; do
         echo "running $(basename "$bin"), round $round of $rounds ..." >&2
         "$bin" >>"$all"
+        case $(basename "$bin"):$cpus in
+            bench_10_fast_raster:1 | bench_10_fast_raster:\?) ;;
+            bench_10_fast_raster:*) side_by_side "$bin" ;;
+        esac
     done
 done
 # Each row (lesson, workload) once, in the order first seen: the round with
@@ -85,6 +116,14 @@ NR == 1 {
     lesson = $1; workload = $2; tris = $6 + 0; frags = $7 + 0; med = $8; lo = $9; hi = $10
     if (med <= 0)
         med = 1e-9 # below the resolution of the clock: no division by zero
+    if (lesson == "cores_alone") { # the cores side by side: not rows of the table
+        alone = med
+        next
+    }
+    if (lesson ~ /^cores_copy_[0-9]+$/) {
+        copy[++copies] = med
+        next
+    }
     mfrag = frags / med / 1e6
     if (lesson == "limit" && workload == "fill_back_to_front")
         limit = mfrag
@@ -166,6 +205,19 @@ END {
             med08[w] = row_med[r]
         if (l ~ /^09_/)
             med09[w] = row_med[r]
+    }
+    # The cores side by side: N copies at once did N frames in the time of
+    # sum(alone / copy k) frames alone; N threads can share no better.
+    if (alone > 0 && copies > 1) {
+        ceiling = 0; slowest = 0
+        for (k = 1; k <= copies; k++) {
+            ceiling += alone / copy[k]
+            slowest = copy[k] > slowest ? copy[k] : slowest
+        }
+        printf("  the cores side by side: %d copies of 10_fast_raster_1t on fill_back_to_front at once\n", copies)
+        printf("    drew %.2f times the frames of one alone (%.2f ms a frame at the slowest, %.2f alone):\n",
+               ceiling, slowest * 1e3, alone * 1e3)
+        printf("    about the most %d threads can gain over one on this machine\n", copies)
     }
     # Lesson 09 against lesson 08 (docs/09_hierarchical_z.md): the time of 08 over that of 09.
     if (("city" in med08) && ("city" in med09))

@@ -5,7 +5,10 @@
  * Each program runs BENCH_ROUNDS times (3 unless set), and each row is its
  * round with the least median: here the second round's, not the first's or
  * the last's. Rounds that leave different depth buffers (another checksum)
- * fail the run, naming the row; a BENCH_ROUNDS out of 1 to 9 is refused. */
+ * fail the run, naming the row; a BENCH_ROUNDS out of 1 to 9 is refused.
+ * With lesson 10's program and more than one core, its one-thread row is
+ * timed alone and in one copy per core at once, by the wall clock, and the
+ * ceiling that leaves for threads is printed. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -86,6 +89,56 @@ static void rounds_that_leave_other_depth_buffers_fail_the_run(void **state)
     shell_result_free(&r);
 }
 
+/* Lesson 10's stand-in: its row of small (0.030 s) each round; asked for its
+ * first configuration of fill_back_to_front by the wall clock, a row whose
+ * median is 0.010 s the first time, 0.020 s after (a slot taken by mkdir, as
+ * the copies run at once). */
+static const char *lesson_10_stand_in(const char *dir)
+{
+    const char *path = write_text_in(
+        dir, "bench_10_fast_raster",
+        "#!/bin/sh\n"
+        "if [ \"${BENCH_CONFIG-}:${BENCH_WALL_CLOCK-}:$*\" != 0:1:fill_back_to_front ]; then\n"
+        "    echo 10_fast_raster_1t,small,8,8,11,100,1000,0.030,0.030,0.030,same; exit 0\n"
+        "fi\n"
+        "i=0; while ! mkdir \"$0.slot$i\" 2>/dev/null; do i=$((i + 1)); done\n"
+        "m=0.020; [ $i = 0 ] && m=0.010\n"
+        "echo \"10_fast_raster_1t,fill_back_to_front,8,8,11,2,1000,$m,$m,$m,same\"\n");
+    if (chmod(path, 0755) != 0)
+        fail_msg("chmod %s", path);
+    return path;
+}
+
+static void the_cores_side_by_side_give_the_ceiling_for_threads(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("run_bench_cores");
+    const char *limit = stand_in(dir, "limit", "0.001", false);
+    const char *lesson = lesson_10_stand_in(dir);
+    ShellResult r = run_bench(dir, "2", limit, lesson);
+    if (r.status != 0)
+        fail_msg("run-bench.sh: status %d\n%s", r.status, r.output);
+    const char *at = strstr(r.output, " CPUs; compiler"), *digits = at; /* "machine: ..., N CPUs" */
+    while (digits && digits > r.output && digits[-1] >= '0' && digits[-1] <= '9')
+        digits--;
+    int cpus = 0;
+    if (!at || digits == at || sscanf(digits, "%d", &cpus) != 1)
+        fail_msg("no CPU count on the machine line:\n%s", r.output);
+    char want[160];
+    snprintf(want, sizeof want, "%d copies of 10_fast_raster_1t on fill_back_to_front at once\n"
+             "    drew %.2f times the frames of one alone (20.00 ms a frame at the slowest, 10.00 alone)",
+             cpus, cpus / 2.0);
+    if (cpus > 1 && !strstr(r.output, want))
+        fail_msg("not '%s' (alone 0.010 s, each copy 0.020 s):\n%s", want, r.output);
+    if (cpus == 1 && strstr(r.output, "side by side"))
+        fail_msg("one core, yet the cores side by side:\n%s", r.output);
+    char *csv = read_text(path_join(dir, "out/results.csv"));
+    if (strstr(csv, "cores_"))
+        fail_msg("results.csv has the cores' rows:\n%s", csv);
+    free(csv);
+    shell_result_free(&r);
+}
+
 static void rounds_out_of_range_are_refused(void **state)
 {
     (void)state;
@@ -110,6 +163,7 @@ int main(void)
         cmocka_unit_test(each_row_is_its_round_with_the_least_median),
         cmocka_unit_test(rounds_that_leave_other_depth_buffers_fail_the_run),
         cmocka_unit_test(rounds_out_of_range_are_refused),
+        cmocka_unit_test(the_cores_side_by_side_give_the_ceiling_for_threads),
     };
     return cmocka_run_group_tests_name("tools: make bench's rounds (run-bench.sh)", tests, NULL,
                                        NULL);
