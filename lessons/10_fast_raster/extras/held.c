@@ -13,7 +13,12 @@
 
 #include "state.h"
 
-#define HOLD_MAX (1 << 16) /* faces held before they are drawn: memory stays small */
+/* Triangles held before they are drawn: HOLD_EACH per thread, so that each
+ * run's bins stay about as small as one thread's between its finishes
+ * (FLUSH_POLYGONS), in its core's cache while the tiles read them; and never
+ * more than HOLD_MAX, so that memory stays small whatever the threads. */
+#define HOLD_EACH (1 << 13)
+#define HOLD_MAX (1 << 16)
 #define RUNS_MAX 64
 
 typedef struct { int face, n; bool convex, clipped; size_t first, first_tri; } HeldFace;
@@ -35,7 +40,8 @@ bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext
     if (!fr->held && !(fr->held = calloc(1, sizeof *fr->held)))
         return false;
     Held *h = fr->held;
-    if (h->nface >= HOLD_MAX)
+    size_t most = (size_t)HOLD_EACH * (size_t)fr->threads; /* threads: 256 at most */
+    if (h->ntri >= (most < HOLD_MAX ? most : HOLD_MAX))
         fast_finish(t, s, NULL);
     void *face = h->face, *v = h->v, *clip = h->clip, *tri = h->tri;
     size_t n = (size_t)f->n;

@@ -1,12 +1,13 @@
 /* pool.c: lesson 10's threads, shown but not taught (fast_raster.h,
  * run_threads). Started at the first finish with more than one thread, they
- * are kept: each waits for the next work, spinning a moment before it
- * sleeps, as a thread asleep may take 50 microseconds or more to wake and
+ * are kept: each waits for the next work, spinning a while before it
+ * sleeps, as a thread asleep may take 50 microseconds or more to wake,
  * fast_finish hands out two works one after the other (the held faces'
- * set-up, then the tiles); the calling thread, its share done, spins a
- * moment too before it sleeps till the others are done. A thread not
- * started leaves its share to the calling thread; the browser's build,
- * which has no threads, draws so. */
+ * set-up, then the tiles), and while a frame's faces are held the next
+ * finish comes a fraction of a millisecond later (held.c); the calling
+ * thread, its share done, spins too before it sleeps till the others are
+ * done. A thread not started leaves its share to the calling thread; the
+ * browser's build, which has no threads, draws so. */
 #include "engine.h"
 
 #include <pthread.h>
@@ -16,7 +17,7 @@
 #include <emmintrin.h> /* _mm_pause */
 #endif
 
-#define SPINS 4000     /* looks for work before a thread sleeps: about 0.1 ms */
+#define SPINS 16000    /* looks for work before a thread sleeps: 0.4 ms on a Zen 5 */
 #define POOL_MAX 255   /* threads besides the calling one (--threads: 1 to 256) */
 
 typedef struct { Pool *pool; int k; unsigned seen; pthread_t id; } Worker; /* thread k */
