@@ -91,10 +91,8 @@ void bins_free(Bins *b)
     free(b);
 }
 
-/* The bins of target t, finishing the picture of another target first. The
- * engine's own (not a thread's copy setting faces up) knows which tiles are
- * yet to be cleared, when there is room for it. */
-Bins *bins_of(Target *t, LessonState *s)
+/* bins_of's work when the bins are not yet t's, or not of t's size. */
+static __attribute__((noinline, cold)) Bins *bins_anew(Target *t, LessonState *s)
 {
     FastRaster *fr = &s->fast;
     Bins *b = fr->bins;
@@ -116,6 +114,18 @@ Bins *bins_of(Target *t, LessonState *s)
     if (b)
         b->target = t;
     return b;
+}
+
+/* The bins of target t, finishing the picture of another target first. The
+ * engine's own (not a thread's copy setting faces up) knows which tiles are
+ * yet to be cleared, when there is room for it. */
+Bins *bins_of(Target *t, LessonState *s)
+{
+    Bins *b = s->fast.bins;
+    if (b && b->target == t && b->tiles_x == (t->width + TILE_SIZE - 1) / TILE_SIZE &&
+        b->tiles_y == (t->height + TILE_SIZE - 1) / TILE_SIZE)
+        return b; /* as for each polygon but the first */
+    return bins_anew(t, s);
 }
 
 LessonState fast_raster(DepthSetup depth, Simd simd, int threads, bool count)
