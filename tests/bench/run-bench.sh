@@ -50,7 +50,9 @@ all="$out_dir/rounds.csv"
 # side_by_side BINARY: rows cores_alone and cores_copy_1 .. cores_copy_N into $all.
 side_by_side() {
     echo "running $(basename "$1") on fill_back_to_front, alone then $cpus at once ..." >&2
-    BENCH_CONFIG=0 BENCH_WALL_CLOCK=1 "$1" fill_back_to_front | sed 's/^[^,]*,/cores_alone,/' >>"$all"
+    BENCH_CONFIG=0 BENCH_WALL_CLOCK=1 "$1" fill_back_to_front >"$out_dir/copy.0"
+    sed 's/^[^,]*,/cores_alone,/' "$out_dir/copy.0" >>"$all"
+    rm -f "$out_dir/copy.0"
     pids=
     for k in $(seq "$cpus"); do
         BENCH_CONFIG=0 BENCH_WALL_CLOCK=1 "$1" fill_back_to_front >"$out_dir/copy.$k" &
