@@ -9,8 +9,8 @@
  * enclosing make passes down (MAKEFLAGS, MAKELEVEL, MFLAGS, and the series'
  * variables of its command line: BUILD, OPT, LESSON, ...): a make in the
  * command starts afresh; a make test in it keeps its scratch in its own tree
- * (TEST_SCRATCH=, tools/run-tests.sh). After timeout_seconds it is killed with everything
- * it started: status 124. */
+ * (TEST_SCRATCH=, tools/run-tests.sh). After timeout_seconds it is killed
+ * with everything it started: status 124. */
 #ifndef SHELL_H
 #define SHELL_H
 

@@ -479,6 +479,14 @@ const char *write_text_in(const char *dir, const char *name, const char *text)
     return path;
 }
 
+const char *write_program_in(const char *dir, const char *name, const char *text)
+{
+    const char *path = write_text_in(dir, name, text);
+    if (chmod(path, 0755) != 0)
+        fail_msg("chmod %s: %s", path, strerror(errno));
+    return path;
+}
+
 char *read_text(const char *path)
 {
     char *data = NULL;

@@ -85,6 +85,8 @@ Path in_dir(const char *dir, const char *file);
 void write_text(const char *path, const char *text);
 /* write_text into dir/name; returns the path (path_join's buffer). */
 const char *write_text_in(const char *dir, const char *name, const char *text);
+/* write_text_in, then made executable (a script: text starts with "#!"). */
+const char *write_program_in(const char *dir, const char *name, const char *text);
 /* The whole file as a NUL-terminated string to free(); fails the test when it
  * cannot be read (or is larger than 4 MiB). */
 char *read_text(const char *path);

@@ -19,7 +19,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "shell.h"
 #include "test_support.h"
@@ -38,10 +37,7 @@ static const char *stand_in(const char *dir, const char *name, const char *media
              "set -- %s; shift $((n <= $# ? n - 1 : $# - 1)); m=$1\n"
              "echo \"%s,small,8,8,11,100,1000,$m,$m,$m,%s\"\n",
              medians, name, changing ? "sum$n" : "same");
-    const char *path = write_text_in(dir, name, text);
-    if (chmod(path, 0755) != 0)
-        fail_msg("chmod %s", path);
-    return path;
+    return write_program_in(dir, name, text);
 }
 
 /* run-bench.sh OUT LIMIT LESSON, with BENCH_ROUNDS=rounds (NULL: unset). */
@@ -95,7 +91,7 @@ static void rounds_that_leave_other_depth_buffers_fail_the_run(void **state)
  * the copies run at once). */
 static const char *lesson_10_stand_in(const char *dir)
 {
-    const char *path = write_text_in(
+    return write_program_in(
         dir, "bench_10_fast_raster",
         "#!/bin/sh\n"
         "if [ \"${BENCH_CONFIG-}:${BENCH_WALL_CLOCK-}:$*\" != 0:1:fill_back_to_front ]; then\n"
@@ -104,9 +100,6 @@ static const char *lesson_10_stand_in(const char *dir)
         "i=0; while ! mkdir \"$0.slot$i\" 2>/dev/null; do i=$((i + 1)); done\n"
         "m=0.020; [ $i = 0 ] && m=0.010\n"
         "echo \"10_fast_raster_1t,fill_back_to_front,8,8,11,2,1000,$m,$m,$m,same\"\n");
-    if (chmod(path, 0755) != 0)
-        fail_msg("chmod %s", path);
-    return path;
 }
 
 static void the_cores_side_by_side_give_the_ceiling_for_threads(void **state)

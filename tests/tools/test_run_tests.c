@@ -37,9 +37,7 @@ static const char *program(const char *dir, const char *name, const char *body)
 {
     char text[8192];
     snprintf(text, sizeof text, "#!/bin/sh\n%s\n", body);
-    const char *path = write_text_in(dir, name, text);
-    assert_int_equal(0, chmod(path, 0755));
-    return path;
+    return write_program_in(dir, name, text);
 }
 
 /* run-tests.sh on the programs (a space-separated list of paths), from the
