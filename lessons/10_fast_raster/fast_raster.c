@@ -13,7 +13,6 @@
 #define POLYGON_MAX_CORNERS 256 /* more: drawn as triangles, as lesson 04 does */
 #define LAST (BLOCK_SIZE - 1)           /* a block's last pixel, from its first */
 #define SHORT_EDGE (1 << 27)     /* |a| + |b| below it: a block's values fit in 32 bits */
-#define FLUSH_POLYGONS (1 << 13) /* drawn once this many wait: the bins stay small */
 
 static int imin(int a, int b) { return a < b ? a : b; }
 static int imax(int a, int b) { return a > b ? a : b; }
@@ -71,8 +70,7 @@ static void bin_polygon(Bins *b, Poly *p, const Corner *c, int n, int turn)
             if (!outside) /* bins_room made room */
                 bin->at[bin->n++] = (uint32_t)b->npoly, bin->work += (long)(w + 1) * (h + 1);
         }
-    p->first = (uint32_t)b->nedge, p->n = m, b->nedge += m;
-    b->poly[b->npoly++] = *p;
+    p->first = (uint32_t)b->nedge, p->n = m, b->nedge += m, b->poly[b->npoly++] = *p;
 }
 
 /* Its box on the screen; binned. */
@@ -94,7 +92,7 @@ static void set_up_polygon(const Primitive *q, const Corner *c, int n, int turn)
     p.small = hi.x - lo.x <= 2 * BLOCK_SIZE * S && hi.y - lo.y <= 2 * BLOCK_SIZE * S;
     p.depth = block_depth(q, &p.plain);
     Bins *b = bins_of(t, q->state);
-    bool room = b && b->npoly < FLUSH_POLYGONS && bins_room(b, &p, n);
+    bool room = b && !bins_full(b) && bins_room(b, &p, n);
     if (b && !room) /* draw what waits, then there is room */
         fast_finish(t, q->state, NULL), room = bins_room(b, &p, n);
     if (room)
@@ -269,8 +267,10 @@ static void draw_tile(TileWork *w, Bins *b, int tile)
     w->tx1 = imin(w->tx0 + TILE_SIZE, w->t->width), w->ty1 = imin(w->ty0 + TILE_SIZE, w->t->height);
     tile_memory(w, b, tile); /* extras/memory.c: where it is drawn, cleared first if it waits */
     for (const Bins *c = b; c; c = c->next)
-        for (size_t k = 0; k < c->bin[tile].n; k++) {
-            const Poly *p = &c->poly[c->bin[tile].at[k]];
+        for (const uint32_t *at = c->bin[tile].at, *end = at + c->bin[tile].n; at < end; at++) {
+            if (at + 4 < end) /* fetched ahead: a bin's polygons may lie far apart in c */
+                __builtin_prefetch(&c->poly[at[4]]), __builtin_prefetch(&c->edge[c->poly[at[2]].first]);
+            const Poly *p = &c->poly[*at];
             (w->fr->simd == SIMD_PIXELS || w->fr->count ? draw_pixels : draw_in_tile)(
                 w, p, &c->edge[p->first]); /* counting: fragment by fragment, in plain C */
         }

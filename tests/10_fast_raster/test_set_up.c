@@ -26,8 +26,9 @@
 
 #define WIDTH 320
 #define HEIGHT 240
-/* Over 8,192 polygons, and about 18,700 triangles, over the 16,384 two threads
- * hold (extras/held.c): the bins, and the faces held, are drawn on the way. */
+/* Over 8,192 polygons heaped on 20 tiles, and about 18,700 triangles, over
+ * the 16,384 two threads hold (extras/held.c): the bins (full, by
+ * bins_full's measure), and the faces held, are drawn on the way. */
 #define FACES 14000
 
 static uint64_t state = 88172645463325252ull;
@@ -177,12 +178,49 @@ static void threads_are_kept_and_run_each_share_once(void **unused)
     assert_true(one.runs == 1 && one.here);
 }
 
+/* bins_full (extras/engine.c): the bins are drawn before the next polygon
+ * never below 8,192 polygons and always at 65,536; in between, at each
+ * 1,024th, when their boxes hold 4 times the pixels of the tiles they touch:
+ * polygons heaped on few tiles are drawn soon, those spread over the screen
+ * wait for more (each finish passes over every busy tile). */
+static void bins_are_full_when_boxes_hold_4_times_their_tiles(void **unused)
+{
+    (void)unused;
+    Bin bin[4] = {{0}};
+    Bins b = {.tiles_x = 2, .tiles_y = 2, .bin = bin};
+    const long tile = (long)TILE_SIZE * TILE_SIZE;
+    bin[0].n = 3, bin[0].work = 100 * tile; /* one busy tile, boxes of 100 times it */
+    b.npoly = 8191;
+    assert_false(bins_full(&b));
+    b.npoly = 8192;
+    assert_true(bins_full(&b));
+    bin[0].work = 4 * tile - 1; /* just under 4 times */
+    assert_false(bins_full(&b));
+    bin[0].work = 4 * tile;
+    assert_true(bins_full(&b));
+    bin[3].n = 1; /* two busy tiles: 8 tiles' pixels now */
+    assert_false(bins_full(&b));
+    bin[3].work = 4 * tile;
+    assert_true(bins_full(&b));
+    b.npoly = 8193; /* weighed at each 1,024th polygon only */
+    assert_false(bins_full(&b));
+    b.npoly = 9216;
+    assert_true(bins_full(&b));
+    bin[0].work = bin[3].work = 1; /* spread thin: it waits, till 65,536 */
+    assert_false(bins_full(&b));
+    b.npoly = 65535;
+    assert_false(bins_full(&b));
+    b.npoly = 65536;
+    assert_true(bins_full(&b));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(faces_set_up_by_one_thread_or_by_both_draw_the_same_bits),
         cmocka_unit_test(blocks_skipped_uncounted_draw_the_same_bits),
         cmocka_unit_test(threads_are_kept_and_run_each_share_once),
+        cmocka_unit_test(bins_are_full_when_boxes_hold_4_times_their_tiles),
     };
     return cmocka_run_group_tests_name("10_fast_raster set-up", tests, NULL, NULL);
 }

@@ -14,9 +14,10 @@
 #include "state.h"
 
 /* Triangles held before they are drawn: HOLD_EACH per thread, so that each
- * run's bins stay about as small as one thread's between its finishes
- * (FLUSH_POLYGONS), in its core's cache while the tiles read them; and never
- * more than HOLD_MAX, so that memory stays small whatever the threads. */
+ * run's bins hold about as many as one thread's hold at the least before a
+ * finish (bins_full, engine.c), in its core's cache while the tiles read
+ * them; and never more than HOLD_MAX, so that memory stays small whatever
+ * the threads. */
 #define HOLD_EACH (1 << 13)
 #define HOLD_MAX (1 << 16)
 #define RUNS_MAX 64
