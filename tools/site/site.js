@@ -225,6 +225,7 @@
         }
         img.alt = "what " + lesson + " " + args.join(" ") + " drew";
         if (f) img.src = URL.createObjectURL(new Blob([f[1]], {type: "image/png"}));
+        else img.removeAttribute("src"); /* no picture this run: not the last one's */
         pre.textContent = r.printed || r.error || "";
         fig.setAttribute("data-run", args.join(" "));
         fig.setAttribute("data-runs", String(++runs));

@@ -258,7 +258,11 @@ async function main() {
                                    [f, k + 1], {timeout: 120000});
         const args = (await f.getAttribute("data-run")).split(" ");
         const shown = await f.$eval(".figure-trace", (t) => t.textContent);
-        const drawn = await f.$eval(".figure-picture", (i) => i.complete && i.naturalWidth > 0);
+        // The run is counted as its picture's src is set: wait for it to load.
+        const drawn = await page.waitForFunction((el) => {
+          const i = el.querySelector(".figure-picture");
+          return i && i.complete && i.naturalWidth > 0 && i.currentSrc === i.src;
+        }, f, {timeout: 30000}).then(() => true, () => false);
         const dir = path.join(work, "figure-flags");
         fs.rmSync(dir, {recursive: true, force: true});
         fs.mkdirSync(dir, {recursive: true});
