@@ -70,7 +70,7 @@ static void bin_polygon(Bins *b, Poly *p, const Corner *c, int n, int turn)
             if (!outside) /* bins_room made room */
                 bin->at[bin->n++] = (uint32_t)b->npoly, bin->work += (long)(w + 1) * (h + 1);
         }
-    p->first = (uint32_t)b->nedge, p->n = m, b->nedge += m, b->poly[b->npoly++] = *p;
+    p->first = (uint32_t)b->nedge, p->n = (uint16_t)m, b->nedge += m, b->poly[b->npoly++] = *p;
 }
 
 /* Its box on the screen; binned. */

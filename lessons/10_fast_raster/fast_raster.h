@@ -58,17 +58,17 @@ static inline int64_t edge_at(const EdgeFn *e, int x, int y) /* e at pixel (x, y
 typedef struct {
     float a0, gx, gy, offset; /* z_w = a0 + gx x + gy y + offset, in this order */
     float unorm;              /* 2^bits - 1 for a unorm format, 0 for float32 */
-    bool reversed; int32_t face;
+    int32_t face;
     uint64_t keep;            /* the pixels a cutout keeps (all: not a cutout) */
-    DepthFormat format;
+    DepthFormat format; bool reversed;
 } BlockDepth;
 
 typedef struct {
     BlockDepth depth;
     int x0, y0, x1, y1;  /* the pixels it may cover, on the screen */
-    uint32_t first, n;   /* its edges in the bins */
+    uint32_t first; uint16_t n; /* its edges in the bins */
     bool plain, small;   /* a plane only plain C takes; corners 16 pixels apart at most */
-} Poly;
+} Poly; /* 64 bytes: a cache line */
 
 typedef struct { uint32_t *at; size_t n, cap; long work; } Bin; /* polygons, in order; box pixels */
 struct Bins {

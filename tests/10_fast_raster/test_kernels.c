@@ -75,7 +75,7 @@ static void every_kernel_covers_the_pixels_of_a_brute_force(void **state_)
     const BlockKernels *k[3];
     const char *name[3];
     int nk = others(k, name);
-    BlockDepth d = {0, 0, 0, 0, 0, false, 7, ~(uint64_t)0, FLOAT32}; /* z_w 0: every pixel passes */
+    BlockDepth d = {0, 0, 0, 0, 0, 7, ~(uint64_t)0, FLOAT32, false}; /* z_w 0: every pixel passes */
     for (int round = 0; round < ROUNDS; round++) {
         EdgeFn e[5];
         int n = between(0, 5), x0 = 8 * between(0, 2000), y0 = 8 * between(0, 2000);
@@ -124,8 +124,9 @@ static void every_kernel_tests_depth_as_plain_c(void **state_)
         int f = between(0, 2);
         BlockDepth d = {(float)(unit() * 1.2 - 0.1), (float)((unit() - 0.5) * 1e-3),
                         (float)((unit() - 0.5) * 1e-3), (float)((unit() - 0.5) * 1e-5),
-                        UNORM[f], next() & 1, between(0, 1000),
-                        next() & 1 ? ~(uint64_t)0 : 0xf0f0f0f00f0f0f0full, FORMATS[f]};
+                        .unorm = UNORM[f], .reversed = next() & 1, .face = between(0, 1000),
+                        .keep = next() & 1 ? ~(uint64_t)0 : 0xf0f0f0f00f0f0f0full,
+                        .format = FORMATS[f]};
         int x0 = 8 * between(0, 2000), y0 = 8 * between(0, 2000), n = between(0, 5);
         EdgeFn e[5];
         random_edges(e, n, x0, y0);

@@ -5,6 +5,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "clip.h"
 #include "guard_band.h"
@@ -28,12 +29,32 @@ bool grow_array(void **items, size_t *cap, size_t need, size_t size)
     return bigger != NULL;
 }
 
+/* As grow_array, its n items moved to memory on 64-byte lines: a Poly is
+ * one line, so that a polygon is stored and read back in one. */
+_Static_assert(sizeof(Poly) == 64, "a polygon is one cache line");
+static bool grow_lines(void **items, size_t *cap, size_t n, size_t need, size_t size)
+{
+    if (need <= *cap)
+        return true;
+    size_t more = *cap ? *cap : 1024;
+    while (more < need)
+        more *= 2;
+    void *bigger = aligned_alloc(64, (more * size + 63) / 64 * 64);
+    if (!bigger)
+        return false;
+    if (n > 0)
+        memcpy(bigger, *items, n * size);
+    free(*items);
+    *items = bigger, *cap = more;
+    return true;
+}
+
 /* Grows b for p, when bins_room found no room (false: out of memory); a
  * function apart, so that the check made for each polygon stays small. */
 static __attribute__((noinline, cold)) bool bins_grow(Bins *b, const Poly *p, int n)
 {
     void *poly = b->poly, *edge = b->edge;
-    bool ok = grow_array(&poly, &b->cap_poly, b->npoly + 1, sizeof *b->poly) &&
+    bool ok = grow_lines(&poly, &b->cap_poly, b->npoly, b->npoly + 1, sizeof *b->poly) &&
               grow_array(&edge, &b->cap_edge, b->nedge + (size_t)n, sizeof *b->edge);
     b->poly = poly, b->edge = edge;
     for (int ty = p->y0 / TILE_SIZE; ok && ty <= (p->y1 - 1) / TILE_SIZE; ty++)
@@ -274,7 +295,7 @@ BlockDepth block_depth(const Primitive *p, bool *plain)
     const DepthSetup *s = &p->state->depth;
     BlockDepth d = {p->plane.a0, p->plane.gx, p->plane.gy, p->offset,
                     s->format == UNORM16 ? 65535.0f : s->format == UNORM24 ? 16777215.0f : 0,
-                    s->mapping == REVERSED, p->face, p->state->fast.keep, s->format};
+                    p->face, p->state->fast.keep, s->format, s->mapping == REVERSED};
     *plain = !(isfinite(d.a0) && isfinite(d.gx) && isfinite(d.gy) && isfinite(d.offset));
     return d;
 }
