@@ -110,7 +110,7 @@ void write_tile(TileWork *w); /* its own memory (if so) back into the target's *
 bool snap_corner(const ScreenVertex *v, Corner *c); /* engine.c; false: not finite, too far */
 Bins *bins_of(Target *t, LessonState *s); /* NULL: out of memory */
 bool bins_room(Bins *b, const Poly *p, int n); /* for p, of n corners */
-bool bins_full(const Bins *b); /* its polygons are to be drawn before more come */
+bool bins_full(Bins *b); /* its polygons are to be drawn before more come */
 void bins_empty(Bins *b); /* and the bins chained after it, unchained */
 bool tile_busy(const Bins *b, int tile); /* a polygon in it, in b or after */
 void draw_fast_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx);

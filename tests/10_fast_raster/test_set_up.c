@@ -214,6 +214,55 @@ static void bins_are_full_when_boxes_hold_4_times_their_tiles(void **unused)
     assert_true(bins_full(&b));
 }
 
+/* One engine of two threads drawing on a target of one tile, then on one of
+ * 16 tiles with a single face: the second finish has a run of no face, whose
+ * bins, kept from the first target, must not be read as the second's. The
+ * face is drawn as an engine of its own draws it. */
+static void one_engine_draws_on_targets_of_two_sizes(void **unused)
+{
+    (void)unused;
+    LessonState s = fast_raster(depth_setup(UNORM24, STANDARD, 0.1, 1000.0), simd_best(), 2,
+                                false);
+    LessonState fresh = fast_raster(depth_setup(UNORM24, STANDARD, 0.1, 1000.0), simd_best(),
+                                    2, false);
+    static const Tri tri[1] = {{{0, 1, 2}}};
+    DrawContext ctx = {0.1, 1000.0, 64, 64};
+    Target small, big, want;
+    Error err;
+    if (!target_init(&small, 64, 64, &err) || !target_init(&big, 256, 256, &err) ||
+        !target_init(&want, 256, 256, &err))
+        fail_msg("target_init: %s", err.msg);
+    FAST_ZBUFFER.clear(&small, &s);
+    for (int i = 0; i < 4; i++) { /* a face for each run */
+        ScreenVertex v[3] = {{2.0 + i, 2, 5}, {60, 10.0 + i, 5}, {10, 60, 5}};
+        ScreenFace f = {i, 3, v, tri, true, NULL};
+        FAST_ZBUFFER.draw_face(&small, &s, &f, &ctx);
+    }
+    if (!fast_finish(&small, &s, &err))
+        fail_msg("fast_finish: %s", err.msg);
+    ctx.width = ctx.height = 256;
+    ScreenVertex v[3] = {{10, 10, 5}, {250, 30, 5}, {40, 240, 5}};
+    ScreenFace f = {7, 3, v, tri, true, NULL};
+    Target *t[2] = {&big, &want};
+    LessonState *st[2] = {&s, &fresh};
+    for (int k = 0; k < 2; k++) {
+        FAST_ZBUFFER.clear(t[k], st[k]);
+        FAST_ZBUFFER.draw_face(t[k], st[k], &f, &ctx);
+        if (!fast_finish(t[k], st[k], &err))
+            fail_msg("fast_finish: %s", err.msg);
+    }
+    size_t drawn = 0;
+    for (size_t i = 0; i < 256 * 256; i++)
+        drawn += want.face[i] == 7;
+    assert_true(drawn > 20000);
+    for (size_t i = 0; i < 256 * 256; i++)
+        if (big.face[i] != want.face[i] || memcmp(&big.depth[i], &want.depth[i], sizeof *big.depth))
+            fail_msg("pixel (%zu, %zu): face %d, as drawn alone %d", i % 256, i / 256,
+                     (int)big.face[i], (int)want.face[i]);
+    fast_raster_free(&s.fast), fast_raster_free(&fresh.fast);
+    target_free(&small), target_free(&big), target_free(&want);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -221,6 +270,7 @@ int main(void)
         cmocka_unit_test(blocks_skipped_uncounted_draw_the_same_bits),
         cmocka_unit_test(threads_are_kept_and_run_each_share_once),
         cmocka_unit_test(bins_are_full_when_boxes_hold_4_times_their_tiles),
+        cmocka_unit_test(one_engine_draws_on_targets_of_two_sizes),
     };
     return cmocka_run_group_tests_name("10_fast_raster set-up", tests, NULL, NULL);
 }

@@ -77,25 +77,34 @@ bool bins_room(Bins *b, const Poly *p, int n)
 }
 
 /* A finish passes over the pixels of every tile with a polygon, so the bins
- * are full only when their boxes hold FLUSH_WORK times those tiles' pixels:
+ * are full only when their boxes hold HEAPED times those tiles' pixels:
  * polygons scattered over the screen wait for more (up to FLUSH_MAX), those
  * heaped on a few tiles are drawn at FLUSH_POLYGONS, while their bins are in
  * the second-level cache. Weighed once in FLUSH_EVERY polygons. */
 #define FLUSH_POLYGONS (1 << 13)
 #define FLUSH_EVERY (1 << 10)
 #define FLUSH_MAX (1 << 16)
-#define FLUSH_WORK 4
+#define HEAPED 4
 
-bool bins_full(const Bins *b)
+bool bins_heaped(int tiles, Bins *const *bins, int n)
+{
+    int64_t busy = 0, work = 0; /* 64 bits: long has 32 in the browser's build */
+    for (int i = 0; i < tiles; i++) {
+        bool any = false;
+        for (int k = 0; k < n; k++)
+            any = any || bins[k]->bin[i].n > 0, work += bins[k]->bin[i].work;
+        busy += any;
+    }
+    return work >= HEAPED * busy * TILE_SIZE * TILE_SIZE;
+}
+
+bool bins_full(Bins *b)
 {
     if (b->npoly >= FLUSH_MAX)
         return true;
     if (b->npoly < FLUSH_POLYGONS || b->npoly % FLUSH_EVERY != 0)
         return false;
-    int64_t busy = 0, work = 0; /* 64 bits: long has 32 in the browser's build */
-    for (int k = 0; k < b->tiles_x * b->tiles_y; k++)
-        busy += b->bin[k].n > 0, work += b->bin[k].work;
-    return work >= FLUSH_WORK * busy * TILE_SIZE * TILE_SIZE;
+    return bins_heaped(b->tiles_x * b->tiles_y, &b, 1);
 }
 
 void bins_empty(Bins *b)

@@ -11,6 +11,8 @@ bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext
 void held_free(FastRaster *fr);
 void pool_free(Pool *pool); /* its threads joined */
 void bins_free(Bins *b);
+/* The n bins, of tiles tiles each: their boxes hold 4 times the pixels of the tiles they touch. */
+bool bins_heaped(int tiles, Bins *const *bins, int n);
 /* Room for need items of size bytes in *items, of *cap; false (nothing changed) without. */
 bool grow_array(void **items, size_t *cap, size_t need, size_t size);
 

@@ -28,6 +28,7 @@ struct Held {
     HeldFace *face; size_t nface, cap_face;
     ScreenVertex *v; Vec4 *clip; size_t nv, cap_v, cap_clip; /* the corners */
     Tri *tri; size_t ntri, cap_tri;
+    size_t hold; /* triangles held before a finish: more while they spread thin */
     DrawContext ctx;
     Bins *run[RUNS_MAX]; /* each run's bins, kept from one finish to the next */
 };
@@ -41,7 +42,7 @@ bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext
     if (!fr->held && !(fr->held = calloc(1, sizeof *fr->held)))
         return false;
     Held *h = fr->held;
-    size_t most = (size_t)HOLD_EACH * (size_t)fr->threads; /* threads: 256 at most */
+    size_t most = h->hold ? h->hold : (size_t)HOLD_EACH * (size_t)fr->threads; /* 256 at most */
     if (h->ntri >= (most < HOLD_MAX ? most : HOLD_MAX))
         fast_finish(t, s, NULL);
     void *face = h->face, *v = h->v, *clip = h->clip, *tri = h->tri;
@@ -101,13 +102,21 @@ void set_up_held_faces(Target *t, LessonState *s)
         r[k] = (Run){t, s, h, h->nface * (size_t)k / (size_t)runs,
                      h->nface * (size_t)(k + 1) / (size_t)runs, k, false};
     run_threads(&fr->pool, runs, set_up_run, r, sizeof *r);
-    Bins *last = fr->bins;
+    Bins *last = fr->bins, *filled[RUNS_MAX];
+    int n = 0;
     bool lost = false;
     for (int k = 0; k < runs; k++) { /* in order: run k's bins after run k - 1's */
-        if (h->run[k])
-            last->next = h->run[k], last = h->run[k];
+        if (h->run[k] && h->run[k]->npoly > 0) /* else empty, maybe another target's */
+            last->next = h->run[k], last = h->run[k], filled[n++] = h->run[k];
         lost = lost || r[k].lost;
     }
+    /* The next finish, as bins_full weighs the bins: after HOLD_EACH a
+     * thread when these faces were heaped on few tiles, else after twice as
+     * many as now (up to HOLD_MAX): fewer passes over the tiles. */
+    size_t least = (size_t)HOLD_EACH * (size_t)fr->threads;
+    size_t more = 2 * (h->hold > least ? h->hold : least);
+    bool heaped = bins_heaped(fr->bins->tiles_x * fr->bins->tiles_y, filled, n);
+    h->hold = heaped ? least : more < HOLD_MAX ? more : HOLD_MAX;
     /* Only now: the runs still going copied the engine, this flag with it. */
     fr->out_of_memory = fr->out_of_memory || lost;
     h->nface = h->nv = h->ntri = 0;
