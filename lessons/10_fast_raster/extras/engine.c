@@ -17,12 +17,19 @@
 
 /* ---- The bins ---------------------------------------------------------- */
 
+/* The capacity for need items, from cap: doubled till they fit. */
+static size_t capacity(size_t cap, size_t need)
+{
+    size_t more = cap ? cap : 1024;
+    while (more < need)
+        more *= 2;
+    return more;
+}
+
 /* Room for need items in *items of *cap; false (nothing changed) without. */
 bool grow_array(void **items, size_t *cap, size_t need, size_t size)
 {
-    size_t more = *cap ? *cap : 1024;
-    while (more < need)
-        more *= 2;
+    size_t more = capacity(*cap, need);
     void *bigger = need <= *cap ? *items : realloc(*items, more * size);
     if (bigger && need > *cap)
         *items = bigger, *cap = more;
@@ -34,14 +41,10 @@ bool grow_array(void **items, size_t *cap, size_t need, size_t size)
 _Static_assert(sizeof(Poly) == 64, "a polygon is one cache line");
 static bool grow_lines(void **items, size_t *cap, size_t n, size_t need, size_t size)
 {
-    if (need <= *cap)
-        return true;
-    size_t more = *cap ? *cap : 1024;
-    while (more < need)
-        more *= 2;
-    void *bigger = aligned_alloc(64, (more * size + 63) / 64 * 64);
-    if (!bigger)
-        return false;
+    size_t more = capacity(*cap, need);
+    void *bigger = need <= *cap ? NULL : aligned_alloc(64, (more * size + 63) / 64 * 64);
+    if (!bigger) /* room already, or none to be had */
+        return need <= *cap;
     if (n > 0)
         memcpy(bigger, *items, n * size);
     free(*items);

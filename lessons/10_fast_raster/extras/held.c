@@ -42,7 +42,7 @@ bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext
     if (!fr->held && !(fr->held = calloc(1, sizeof *fr->held)))
         return false;
     Held *h = fr->held;
-    size_t most = h->hold ? h->hold : (size_t)HOLD_EACH * (size_t)fr->threads; /* 256 at most */
+    size_t most = h->hold ? h->hold : (size_t)HOLD_EACH * (size_t)fr->threads; /* threads: 256 at most */
     if (h->ntri >= (most < HOLD_MAX ? most : HOLD_MAX))
         fast_finish(t, s, NULL);
     void *face = h->face, *v = h->v, *clip = h->clip, *tri = h->tri;
