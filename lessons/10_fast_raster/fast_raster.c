@@ -16,6 +16,9 @@
 
 static int imin(int a, int b) { return a < b ? a : b; }
 static int imax(int a, int b) { return a > b ? a : b; }
+/* v / S rounded down (intmath.h's floor_div) in one shift, as S is a power of two:
+ * gcc and clang shift a negative v arithmetically, which C leaves to them. */
+static int64_t floor_pixels(int64_t v) { return v >> SUBPIXEL_BITS; }
 
 /* ---- Set-up: each polygon into the bins of the tiles it may touch ------ */
 
@@ -31,7 +34,7 @@ static EdgeFn edge_function(Corner from, Corner to)
      * centre on the edge is outside it. */
     bool on_edge_inside = dy < 0 || (dy == 0 && dx > 0);
     int64_t c = (HALF_PIXEL - from.y) * dx - (HALF_PIXEL - from.x) * dy - !on_edge_inside;
-    return (EdgeFn){floor_div(c, S), (int32_t)-dy, (int32_t)dx};
+    return (EdgeFn){floor_pixels(c), (int32_t)-dy, (int32_t)dx};
     /* SOLUTION STUB
     return (EdgeFn){0, (int32_t)-dy, (int32_t)dx};
     */
@@ -57,9 +60,9 @@ static void bin_polygon(Bins *b, Poly *p, const Corner *c, int n, int turn)
             e[m++] = edge_function(from, to);
     }
     int x0 = p->x0, x1 = p->x1, y0 = p->y0, y1 = p->y1; /* kept here: a bin's store may alias p */
-    bool one = x0 / TILE_SIZE == (x1 - 1) / TILE_SIZE && y0 / TILE_SIZE == (y1 - 1) / TILE_SIZE;
-    for (int ty = y0 / TILE_SIZE; ty <= (y1 - 1) / TILE_SIZE; ty++)
-        for (int tx = x0 / TILE_SIZE; tx <= (x1 - 1) / TILE_SIZE; tx++) {
+    bool one = tile_of(x0) == tile_of(x1 - 1) && tile_of(y0) == tile_of(y1 - 1);
+    for (int ty = tile_of(y0); ty <= tile_of(y1 - 1); ty++)
+        for (int tx = tile_of(x0); tx <= tile_of(x1 - 1); tx++) {
             int left = imax(x0, tx * TILE_SIZE), top = imax(y0, ty * TILE_SIZE);
             int w = imin(x1, (tx + 1) * TILE_SIZE) - 1 - left;
             int h = imin(y1, (ty + 1) * TILE_SIZE) - 1 - top;
@@ -82,11 +85,11 @@ static void set_up_polygon(const Primitive *q, const Corner *c, int n, int turn)
         lo.x = c[k].x < lo.x ? c[k].x : lo.x, hi.x = c[k].x > hi.x ? c[k].x : hi.x;
         lo.y = c[k].y < lo.y ? c[k].y : lo.y, hi.y = c[k].y > hi.y ? c[k].y : hi.y;
     }
-    Poly p = {/* the pixel centres of the box, on the screen */
-              .x0 = imin(t->width, imax(0, (int)ceil_div(lo.x - HALF_PIXEL, S))),
-              .y0 = imin(t->height, imax(0, (int)ceil_div(lo.y - HALF_PIXEL, S))),
-              .x1 = imax(0, imin(t->width, (int)floor_div(hi.x - HALF_PIXEL, S) + 1)),
-              .y1 = imax(0, imin(t->height, (int)floor_div(hi.y - HALF_PIXEL, S) + 1))};
+    Poly p = {/* the pixel centres of the box, on the screen (rounded up: -floor(-v)) */
+              .x0 = imin(t->width, imax(0, (int)-floor_pixels(HALF_PIXEL - lo.x))),
+              .y0 = imin(t->height, imax(0, (int)-floor_pixels(HALF_PIXEL - lo.y))),
+              .x1 = imax(0, imin(t->width, (int)floor_pixels(hi.x - HALF_PIXEL) + 1)),
+              .y1 = imax(0, imin(t->height, (int)floor_pixels(hi.y - HALF_PIXEL) + 1))};
     if (p.x0 >= p.x1 || p.y0 >= p.y1)
         return; /* no pixel centre on the screen */
     p.small = hi.x - lo.x <= 2 * BLOCK_SIZE * S && hi.y - lo.y <= 2 * BLOCK_SIZE * S;
@@ -214,9 +217,8 @@ static bool draw_windows(TileWork *w, const Poly *p, const EdgeFn *e, int x0, in
             uint64_t box = box_mask(x - left, imin(x + BLOCK_SIZE, x1) - left, 0,
                                     imin(y + BLOCK_SIZE, y1) - y), inside;
             size_t i = (size_t)(y - w->oy) * w->stride + (size_t)(left - w->ox);
-            float far; /* not asked for */
             uint64_t passed = kernels->draw(w->depth + i, w->face + i, w->stride, left, y, box, e,
-                                            (int)p->n, &p->depth, &inside, &far);
+                                            (int)p->n, &p->depth, &inside, NULL);
             count(w, inside, passed);
         }
     return true;

@@ -14,12 +14,12 @@
 #include <stdint.h>
 
 #include "hierarchical_z.h"
-#include "intmath.h"
 #include "polygon.h"
 #include "scanline.h"
 
 #define TILE_SIZE 64 /* pixels: a tile is 8 x 8 blocks */
 #define BLOCK_SIZE 8 /* pixels: a block row is one AVX2 register of floats */
+static inline int tile_of(int x) { return (int)((unsigned)x / TILE_SIZE); } /* x >= 0: a shift */
 
 typedef enum { SIMD_PIXELS /* no blocks */, SIMD_NONE, SIMD_SSE2, SIMD_AVX2, SIMD_AVX512 } Simd;
 typedef struct Bins Bins; /* what waits for fast_finish */
@@ -84,7 +84,8 @@ struct Bins {
 typedef struct { /* simd.c's AVX2; extras/: plain C, SSE2, AVX-512: the same bits */
     /* The block at (x0, y0), its first pixel at depth[0]: its pixels of box inside e's
      * n edges (values there in 32 bits; none: all of box), *inside, tested: those that
-     * passed. *farthest: the block's farthest value after, when every row had one; or NaN. */
+     * passed. *farthest (when not NULL): the block's farthest value after, when every
+     * row had one; or NaN. */
     uint64_t (*draw)(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t box,
                      const EdgeFn *e, int n, const BlockDepth *d, uint64_t *inside, float *farthest);
 } BlockKernels;

@@ -82,7 +82,9 @@ rows(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t box, c
     float lane[4]; /* the farthest of 8 lanes, as SSE2's of 4 */
     __m128 lo = _mm256_castps256_ps128(far), hi = _mm256_extractf128_ps(far, 1);
     _mm_storeu_ps(lane, reversed ? _mm_min_ps(lo, hi) : _mm_max_ps(lo, hi));
-    *inside = covered, *farthest = every_row(covered) ? farthest_of(lane, 4, reversed) : NAN;
+    *inside = covered;
+    if (farthest) /* asked for: not by a window */
+        *farthest = every_row(covered) ? farthest_of(lane, 4, reversed) : NAN;
     return passed;
 }
 
@@ -90,6 +92,8 @@ AVX2 static uint64_t avx2_draw(float *depth, int32_t *face, size_t stride, int x
                                uint64_t box, const EdgeFn *e, int n, const BlockDepth *d,
                                uint64_t *inside, float *farthest)
 {
+    if (!farthest) /* a window, which asks for none */
+        return rows(depth, face, stride, x0, y0, box, e, n, d, inside, NULL);
     return n == 0 ? rows(depth, face, stride, x0, y0, box, e, 0, d, inside, farthest)  /* covered */
                   : rows(depth, face, stride, x0, y0, box, e, n, d, inside, farthest); /* crossed */
 }

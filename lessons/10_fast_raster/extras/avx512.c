@@ -1,6 +1,7 @@
 /* avx512.c: lesson 10's block kernel with AVX-512, shown but not taught:
  * simd.c's AVX2 kernel two block rows at a time, in one register of 16, and
- * its writes masked (no blend, no read of the faces first). The same bits as
+ * its writes masked (no blend, no read of the faces first); compiled apart
+ * for a window's triangle, which asks for no farthest value. The same bits as
  * plain C: z_w in the same order, mul then add, rintf's rounding. */
 #include "engine.h"
 
@@ -83,15 +84,20 @@ pairs(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t box, 
         if (two)
             _mm256_mask_storeu_ps(below, (__mmask8)(kept >> 8), _mm512_extractf32x8_ps(z, 1)),
                 _mm256_mask_storeu_epi32(f + stride, (__mmask8)(kept >> 8), id);
-        stored = _mm512_mask_blend_ps((__mmask16)kept, stored, z);
-        far = reversed ? _mm512_min_ps(far, stored) : _mm512_max_ps(far, stored);
+        if (farthest) { /* asked for: not by a window */
+            stored = _mm512_mask_blend_ps((__mmask16)kept, stored, z);
+            far = reversed ? _mm512_min_ps(far, stored) : _mm512_max_ps(far, stored);
+        }
     }
+    *inside = covered;
+    if (!farthest)
+        return passed;
     float lane[4]; /* the farthest of 16 lanes, as SSE2's of 4: in registers, not 16 in C */
     __m256 lo = _mm512_castps512_ps256(far), hi = _mm512_extractf32x8_ps(far, 1);
     __m256 half = reversed ? _mm256_min_ps(lo, hi) : _mm256_max_ps(lo, hi);
     __m128 a = _mm256_castps256_ps128(half), b = _mm256_extractf128_ps(half, 1);
     _mm_storeu_ps(lane, reversed ? _mm_min_ps(a, b) : _mm_max_ps(a, b));
-    *inside = covered, *farthest = every_row(covered) ? farthest_of(lane, 4, reversed) : NAN;
+    *farthest = every_row(covered) ? farthest_of(lane, 4, reversed) : NAN;
     return passed;
 }
 
@@ -99,8 +105,11 @@ AVX512 static uint64_t avx512_draw(float *depth, int32_t *face, size_t stride, i
                                    uint64_t box, const EdgeFn *e, int n, const BlockDepth *d,
                                    uint64_t *inside, float *farthest)
 {
-    return n == 0 ? pairs(depth, face, stride, x0, y0, box, e, 0, d, inside, farthest)
-                  : pairs(depth, face, stride, x0, y0, box, e, n, d, inside, farthest);
+    if (farthest) /* a block, covered whole or crossed */
+        return n == 0 ? pairs(depth, face, stride, x0, y0, box, e, 0, d, inside, farthest)
+                      : pairs(depth, face, stride, x0, y0, box, e, n, d, inside, farthest);
+    return n == 3 ? pairs(depth, face, stride, x0, y0, box, e, 3, d, inside, NULL) /* a window */
+                  : pairs(depth, face, stride, x0, y0, box, e, n, d, inside, NULL);
 }
 
 const BlockKernels AVX512_KERNELS = {avx512_draw};

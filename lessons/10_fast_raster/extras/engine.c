@@ -60,8 +60,8 @@ static __attribute__((noinline, cold)) bool bins_grow(Bins *b, const Poly *p, in
     bool ok = grow_lines(&poly, &b->cap_poly, b->npoly, b->npoly + 1, sizeof *b->poly) &&
               grow_array(&edge, &b->cap_edge, b->nedge + (size_t)n, sizeof *b->edge);
     b->poly = poly, b->edge = edge;
-    for (int ty = p->y0 / TILE_SIZE; ok && ty <= (p->y1 - 1) / TILE_SIZE; ty++)
-        for (int tx = p->x0 / TILE_SIZE; ok && tx <= (p->x1 - 1) / TILE_SIZE; tx++) {
+    for (int ty = tile_of(p->y0); ok && ty <= tile_of(p->y1 - 1); ty++)
+        for (int tx = tile_of(p->x0); ok && tx <= tile_of(p->x1 - 1); tx++) {
             Bin *bin = &b->bin[ty * b->tiles_x + tx];
             void *at = bin->at;
             ok = grow_array(&at, &bin->cap, bin->n + 1, sizeof *bin->at);
@@ -73,8 +73,8 @@ static __attribute__((noinline, cold)) bool bins_grow(Bins *b, const Poly *p, in
 bool bins_room(Bins *b, const Poly *p, int n)
 {
     bool room = b->npoly < b->cap_poly && b->nedge + (size_t)n <= b->cap_edge;
-    for (int ty = p->y0 / TILE_SIZE; room && ty <= (p->y1 - 1) / TILE_SIZE; ty++)
-        for (int tx = p->x0 / TILE_SIZE; room && tx <= (p->x1 - 1) / TILE_SIZE; tx++)
+    for (int ty = tile_of(p->y0); room && ty <= tile_of(p->y1 - 1); ty++)
+        for (int tx = tile_of(p->x0); room && tx <= tile_of(p->x1 - 1); tx++)
             room = b->bin[ty * b->tiles_x + tx].n < b->bin[ty * b->tiles_x + tx].cap;
     return room || bins_grow(b, p, n); /* room, as nearly always: nothing grown */
 }

@@ -80,6 +80,8 @@ static uint64_t inside_then(Inside *cover, DepthTest *test, float *depth, int32_
                             size_t stride, int x0, int y0, uint64_t box, const EdgeFn *e, int n,
                             const BlockDepth *d, uint64_t *inside, float *farthest)
 {
+    float unasked; /* by a window */
+    farthest = farthest ? farthest : &unasked;
     *inside = n > 0 ? cover(e, n, x0, y0, box) : box, *farthest = NAN;
     return *inside ? test(depth, face, stride, x0, y0, *inside, d, farthest) : 0;
 }
