@@ -28,12 +28,19 @@ struct Held {
     HeldFace *face; size_t nface, cap_face;
     ScreenVertex *v; Vec4 *clip; size_t nv, cap_v, cap_clip; /* the corners */
     Tri *tri; size_t ntri, cap_tri;
-    size_t hold; /* triangles held before a finish: more while they spread thin */
+    size_t hold; /* triangles held before a finish (HOLD_MAX at most): more while they spread thin */
     DrawContext ctx;
     Bins *run[RUNS_MAX]; /* each run's bins, kept from one finish to the next */
 };
 
 typedef struct { Target *t; LessonState *s; Held *h; size_t lo, hi; int k; bool lost; } Run;
+
+/* Triangles held before a finish at the least: HOLD_EACH a thread, HOLD_MAX at most. */
+static size_t least_hold(const FastRaster *fr)
+{
+    size_t least = (size_t)HOLD_EACH * (size_t)fr->threads; /* threads: 256 at most */
+    return least < HOLD_MAX ? least : HOLD_MAX;
+}
 
 /* False: it cannot be held (set up now). */
 bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx)
@@ -42,8 +49,7 @@ bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext
     if (!fr->held && !(fr->held = calloc(1, sizeof *fr->held)))
         return false;
     Held *h = fr->held;
-    size_t most = h->hold ? h->hold : (size_t)HOLD_EACH * (size_t)fr->threads; /* threads: 256 at most */
-    if (h->ntri >= (most < HOLD_MAX ? most : HOLD_MAX))
+    if (h->ntri >= (h->hold ? h->hold : least_hold(fr)))
         fast_finish(t, s, NULL);
     void *face = h->face, *v = h->v, *clip = h->clip, *tri = h->tri;
     size_t n = (size_t)f->n;
@@ -110,13 +116,12 @@ void set_up_held_faces(Target *t, LessonState *s)
             last->next = h->run[k], last = h->run[k], filled[n++] = h->run[k];
         lost = lost || r[k].lost;
     }
-    /* The next finish, as bins_full weighs the bins: after HOLD_EACH a
-     * thread when these faces were heaped on few tiles, else after twice as
-     * many as now (up to HOLD_MAX): fewer passes over the tiles. */
-    size_t least = (size_t)HOLD_EACH * (size_t)fr->threads;
-    size_t more = 2 * (h->hold > least ? h->hold : least);
+    /* The next finish, as bins_full weighs the bins: after least_hold when
+     * these faces were heaped on few tiles, else after twice as many as now
+     * (up to HOLD_MAX): fewer passes over the tiles. */
+    size_t now = h->hold ? h->hold : least_hold(fr), more = 2 * now;
     bool heaped = bins_heaped(fr->bins->tiles_x * fr->bins->tiles_y, filled, n);
-    h->hold = heaped ? least : more < HOLD_MAX ? more : HOLD_MAX;
+    h->hold = heaped ? least_hold(fr) : more < HOLD_MAX ? more : HOLD_MAX;
     /* Only now: the runs still going copied the engine, this flag with it. */
     fr->out_of_memory = fr->out_of_memory || lost;
     h->nface = h->nv = h->ntri = 0;
