@@ -1,8 +1,9 @@
 /* kernels.c: lesson 10's block kernel (fast_raster.h) in plain C, one pixel
  * at a time, and with SSE2, a block row in two registers of 4: the same as
  * simd.c's AVX2 kernel (the page teaches that one), for --simd none and
- * sse2, for a plane only plain C takes, and for an x86-64 without AVX2. Both
- * find the pixels inside the edges first, then test them.
+ * sse2, for a plane only plain C takes, and for an x86-64 without AVX2.
+ * Plain C finds the pixels inside the edges first, then tests them; SSE2
+ * does both a row at a time, as AVX2 does.
  * They give the same bits (simd.c says how). Then which kernels run: the
  * widest the machine has, AVX-512's (avx512.c) where it has AVX-512. */
 #include "engine.h"
@@ -58,10 +59,6 @@ static uint64_t plain_depth_test(float *depth, int32_t *face, size_t stride, int
 }
 
 /* The pixels of box inside e's n edges: their values there fit in 32 bits. */
-typedef uint64_t Inside(const EdgeFn *e, int n, int x0, int y0, uint64_t box);
-typedef uint64_t DepthTest(float *depth, int32_t *face, size_t stride, int x0, int y0,
-                           uint64_t mask, const BlockDepth *d, float *farthest);
-
 static uint64_t plain_inside(const EdgeFn *e, int n, int x0, int y0, uint64_t box)
 {
     uint64_t mask = box;
@@ -74,23 +71,15 @@ static uint64_t plain_inside(const EdgeFn *e, int n, int x0, int y0, uint64_t bo
     return mask;
 }
 
-/* The kernel in plain C and SSE2: the pixels inside first, then those
- * tested (none: not called, no farthest value). */
-static uint64_t inside_then(Inside *cover, DepthTest *test, float *depth, int32_t *face,
-                            size_t stride, int x0, int y0, uint64_t box, const EdgeFn *e, int n,
-                            const BlockDepth *d, uint64_t *inside, float *farthest)
+/* The pixels inside first, then those tested (none: not called, no farthest value). */
+static uint64_t plain_draw(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t box,
+                           const EdgeFn *e, int n, const BlockDepth *d, uint64_t *inside,
+                           float *farthest)
 {
     float unasked; /* by a window */
     farthest = farthest ? farthest : &unasked;
-    *inside = n > 0 ? cover(e, n, x0, y0, box) : box, *farthest = NAN;
-    return *inside ? test(depth, face, stride, x0, y0, *inside, d, farthest) : 0;
-}
-
-static uint64_t plain_draw(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t box,
-                           const EdgeFn *e, int n, const BlockDepth *d, uint64_t *in, float *far)
-{
-    return inside_then(plain_inside, plain_depth_test, depth, face, stride, x0, y0, box, e, n, d,
-                       in, far);
+    *inside = n > 0 ? plain_inside(e, n, x0, y0, box) : box, *farthest = NAN;
+    return *inside ? plain_depth_test(depth, face, stride, x0, y0, *inside, d, farthest) : 0;
 }
 
 const BlockKernels PLAIN_KERNELS = {plain_draw};
@@ -100,91 +89,107 @@ const BlockKernels PLAIN_KERNELS = {plain_draw};
 
 /* ---- SSE2: a block row is two registers of 4 ---------------------------- */
 
-static uint64_t sse2_inside(const EdgeFn *e, int n, int x0, int y0, uint64_t box)
+/* e's values along row y from x0: pixels 0 to 3 in *lo, 4 to 7 in *hi. */
+static inline void sse2_edge_values(const EdgeFn *e, int x0, int y, __m128i *lo, __m128i *hi)
 {
-    uint64_t outside = 0;
-    for (int j = 0; j < 8; j++) {
-        if (!ROW(box, j))
-            continue;
-        __m128i lo = _mm_setzero_si128(), hi = lo;
-        for (int k = 0; k < n; k++) { /* an OR is negative when one of them is */
-            int32_t g = (int32_t)edge_at(&e[k], x0, y0 + j);
-            __m128i v = _mm_add_epi32(_mm_set1_epi32(g),
-                                      _mm_set_epi32(3 * e[k].a, 2 * e[k].a, e[k].a, 0));
-            lo = _mm_or_si128(lo, v);
-            hi = _mm_or_si128(hi, _mm_add_epi32(v, _mm_set1_epi32(4 * e[k].a)));
-        }
-        int bits = _mm_movemask_ps(_mm_castsi128_ps(lo)) |
-                   _mm_movemask_ps(_mm_castsi128_ps(hi)) << 4;
-        outside |= (uint64_t)bits << (8 * j);
-    }
-    return box & ~outside;
+    *lo = _mm_add_epi32(_mm_set1_epi32((int32_t)edge_at(e, x0, y)),
+                        _mm_set_epi32(3 * e->a, 2 * e->a, e->a, 0));
+    *hi = _mm_add_epi32(*lo, _mm_set1_epi32(4 * e->a));
 }
 
-/* encode_depth: clamped to [0, 1] (max, then min: a NaN would stay), times
- * 2^bits - 1, rounded to the nearest integer. */
-static __m128 sse2_encode(__m128 z, float unorm)
+/* simd.c's rows with a row in two halves of 4: its coverage (three edges held
+ * in registers), z_w, codes, comparison and write, stored whole (a blend by
+ * AND and OR: SSE2 has no blendv); in a block covered whole, a row that
+ * passes whole needs none. */
+static inline __attribute__((always_inline)) uint64_t
+sse2_rows(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t box,
+          const EdgeFn *e, int n, const BlockDepth *d, uint64_t *inside, float *farthest)
 {
-    if (unorm == 0)
-        return z;
-    z = _mm_min_ps(_mm_set1_ps(1.0f), _mm_max_ps(_mm_setzero_ps(), z));
-    return _mm_cvtepi32_ps(_mm_cvtps_epi32(_mm_mul_ps(z, _mm_set1_ps(unorm))));
-}
-
-static __m128i sse2_lanes(int bits, __m128i bit) /* all ones in the lanes of bits */
-{
-    return _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(bits), bit), bit);
-}
-
-static int sse2_half(float *depth, int32_t *face, __m128 tx, __m128 ty, int bits,
-                     const BlockDepth *d, __m128 *far)
-{
-    __m128 z = _mm_add_ps(_mm_add_ps(tx, ty), _mm_set1_ps(d->offset));
-    __m128 value = sse2_encode(z, d->unorm), stored = _mm_loadu_ps(depth);
-    __m128 win = d->reversed ? _mm_cmpgt_ps(value, stored) : _mm_cmplt_ps(value, stored);
-    int passed = _mm_movemask_ps(win) & bits, kept = passed & (int)(d->keep & 0xf);
-    __m128i m = sse2_lanes(kept, _mm_set_epi32(8, 4, 2, 1)); /* stored whole: no branch */
-    __m128i f = _mm_loadu_si128((const __m128i *)face);
-    stored = _mm_or_ps(_mm_and_ps(_mm_castsi128_ps(m), value),
-                       _mm_andnot_ps(_mm_castsi128_ps(m), stored));
-    _mm_storeu_ps(depth, stored);
-    _mm_storeu_si128((__m128i *)face, _mm_or_si128(_mm_and_si128(m, _mm_set1_epi32(d->face)),
-                                                   _mm_andnot_si128(m, f)));
-    *far = d->reversed ? _mm_min_ps(*far, stored) : _mm_max_ps(*far, stored);
-    return passed;
-}
-
-static uint64_t sse2_depth_test(float *depth, int32_t *face, size_t stride, int x0, int y0,
-                                uint64_t mask, const BlockDepth *d, float *farthest)
-{
-    __m128 far = _mm_set1_ps(d->reversed ? INFINITY : -INFINITY);
-    __m128 a0 = _mm_set1_ps(d->a0), gx = _mm_set1_ps(d->gx);
-    __m128 x_lo = _mm_set_ps((float)(x0 + 3), (float)(x0 + 2), (float)(x0 + 1), (float)x0);
+    const float gy = d->gy, unorm = d->unorm;
+    const bool reversed = d->reversed, whole = n == 0 && box == ~(uint64_t)0;
+    const uint64_t keep = d->keep;
+    const __m128 offset = _mm_set1_ps(d->offset), a0 = _mm_set1_ps(d->a0), gx = _mm_set1_ps(d->gx);
+    const __m128i id = _mm_set1_epi32(d->face);
+    const __m128i bit_lo = _mm_set_epi32(8, 4, 2, 1), bit_hi = _mm_set_epi32(128, 64, 32, 16);
+    __m128 far = _mm_set1_ps(reversed ? INFINITY : -INFINITY);
+    __m128 x_lo = _mm_add_ps(_mm_set1_ps((float)x0), _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f));
     __m128 x_hi = _mm_add_ps(x_lo, _mm_set1_ps(4.0f)); /* exact: integers below 2^24 */
     __m128 tx_lo = _mm_add_ps(a0, _mm_mul_ps(gx, x_lo)), tx_hi = _mm_add_ps(a0, _mm_mul_ps(gx, x_hi));
-    BlockDepth lo = *d, hi = *d;
-    uint64_t passed = 0;
-    int first = __builtin_ctzll(mask) / 8, last = 7 - __builtin_clzll(mask) / 8;
-    for (int j = first; j <= last; j++) { /* the rows of mask, every one whole */
-        int bits = ROW(mask, j);
-        __m128 ty = _mm_set1_ps(d->gy * (float)(y0 + j));
-        lo.keep = d->keep >> (8 * j), hi.keep = d->keep >> (8 * j + 4);
-        size_t at = (size_t)j * stride;
-        int row = sse2_half(depth + at, face + at, tx_lo, ty, bits & 0xf, &lo, &far) |
-                  sse2_half(depth + at + 4, face + at + 4, tx_hi, ty, bits >> 4, &hi, &far) << 4;
-        passed |= (uint64_t)row << (8 * j);
+    uint64_t passed = 0, covered = box;
+    int first = __builtin_ctzll(box) / 8, last = 7 - __builtin_clzll(box) / 8;
+    const EdgeFn *e1 = &e[n > 1 ? 1 : 0], *e2 = &e[n > 2 ? 2 : n > 1 ? 1 : 0];
+    __m128i v0 = _mm_setzero_si128(), v1 = v0, v2 = v0, w0 = v0, w1 = v0, w2 = v0; /* lo, hi */
+    __m128i down0 = v0, down1 = v0, down2 = v0;
+    if (n != 0) /* else none is read */
+        sse2_edge_values(e, x0, y0 + first, &v0, &w0), sse2_edge_values(e1, x0, y0 + first, &v1, &w1),
+        sse2_edge_values(e2, x0, y0 + first, &v2, &w2), down0 = _mm_set1_epi32(e->b),
+        down1 = _mm_set1_epi32(e1->b), down2 = _mm_set1_epi32(e2->b);
+    for (int j = first; j <= last; j++) {
+        if (n != 0) { /* an OR is negative where one of them is: outside */
+            __m128i lo = _mm_or_si128(_mm_or_si128(v0, v1), v2);
+            __m128i hi = _mm_or_si128(_mm_or_si128(w0, w1), w2);
+            for (int k = 3; k < n; k++) {
+                __m128i l, h;
+                sse2_edge_values(&e[k], x0, y0 + j, &l, &h);
+                lo = _mm_or_si128(lo, l), hi = _mm_or_si128(hi, h);
+            }
+            int out = _mm_movemask_ps(_mm_castsi128_ps(lo)) |
+                      _mm_movemask_ps(_mm_castsi128_ps(hi)) << 4;
+            covered &= ~((uint64_t)out << (8 * j));
+            v0 = _mm_add_epi32(v0, down0), v1 = _mm_add_epi32(v1, down1);
+            v2 = _mm_add_epi32(v2, down2), w0 = _mm_add_epi32(w0, down0);
+            w1 = _mm_add_epi32(w1, down1), w2 = _mm_add_epi32(w2, down2);
+        }
+        __m128 ty = _mm_set1_ps(gy * (float)(y0 + j));
+        __m128 z_lo = _mm_add_ps(_mm_add_ps(tx_lo, ty), offset);
+        __m128 z_hi = _mm_add_ps(_mm_add_ps(tx_hi, ty), offset);
+        if (unorm != 0) { /* encode_depth: clamped (max, then min), scaled, rounded */
+            __m128 one = _mm_set1_ps(1.0f), zero = _mm_setzero_ps(), scale = _mm_set1_ps(unorm);
+            z_lo = _mm_cvtepi32_ps(_mm_cvtps_epi32(_mm_mul_ps(_mm_min_ps(one, _mm_max_ps(zero, z_lo)), scale)));
+            z_hi = _mm_cvtepi32_ps(_mm_cvtps_epi32(_mm_mul_ps(_mm_min_ps(one, _mm_max_ps(zero, z_hi)), scale)));
+        }
+        float *row = depth + (size_t)j * stride;
+        int32_t *f = face + (size_t)j * stride;
+        __m128 lo = _mm_loadu_ps(row), hi = _mm_loadu_ps(row + 4);
+        __m128 win_lo = reversed ? _mm_cmpgt_ps(z_lo, lo) : _mm_cmplt_ps(z_lo, lo);
+        __m128 win_hi = reversed ? _mm_cmpgt_ps(z_hi, hi) : _mm_cmplt_ps(z_hi, hi);
+        int won = (_mm_movemask_ps(win_lo) | _mm_movemask_ps(win_hi) << 4) & ROW(covered, j);
+        int kept = won & ROW(keep, j);
+        passed |= (uint64_t)won << (8 * j);
+        if (whole && kept == 0xff) { /* the row stored as it is, no blend */
+            lo = z_lo, hi = z_hi;
+            _mm_storeu_si128((__m128i *)f, id), _mm_storeu_si128((__m128i *)(f + 4), id);
+        } else {
+            __m128i ks = _mm_set1_epi32(kept);
+            __m128i m_lo = _mm_cmpeq_epi32(_mm_and_si128(ks, bit_lo), bit_lo);
+            __m128i m_hi = _mm_cmpeq_epi32(_mm_and_si128(ks, bit_hi), bit_hi);
+            lo = _mm_or_ps(_mm_and_ps(_mm_castsi128_ps(m_lo), z_lo), _mm_andnot_ps(_mm_castsi128_ps(m_lo), lo));
+            hi = _mm_or_ps(_mm_and_ps(_mm_castsi128_ps(m_hi), z_hi), _mm_andnot_ps(_mm_castsi128_ps(m_hi), hi));
+            __m128i f_lo = _mm_loadu_si128((const __m128i *)f), f_hi = _mm_loadu_si128((const __m128i *)(f + 4));
+            _mm_storeu_si128((__m128i *)f, _mm_or_si128(_mm_and_si128(m_lo, id), _mm_andnot_si128(m_lo, f_lo)));
+            _mm_storeu_si128((__m128i *)(f + 4), _mm_or_si128(_mm_and_si128(m_hi, id), _mm_andnot_si128(m_hi, f_hi)));
+        }
+        _mm_storeu_ps(row, lo), _mm_storeu_ps(row + 4, hi);
+        if (farthest) /* asked for: not by a window */
+            far = reversed ? _mm_min_ps(far, _mm_min_ps(lo, hi)) : _mm_max_ps(far, _mm_max_ps(lo, hi));
     }
-    float lane[4];
-    _mm_storeu_ps(lane, far);
-    *farthest = every_row(mask) ? farthest_of(lane, 4, d->reversed) : NAN;
+    *inside = covered;
+    if (farthest) {
+        float lane[4];
+        _mm_storeu_ps(lane, far);
+        *farthest = every_row(covered) ? farthest_of(lane, 4, reversed) : NAN;
+    }
     return passed;
 }
 
 static uint64_t sse2_draw(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t box,
                           const EdgeFn *e, int n, const BlockDepth *d, uint64_t *inside, float *far)
 {
-    return inside_then(sse2_inside, sse2_depth_test, depth, face, stride, x0, y0, box, e, n, d,
-                       inside, far);
+    if (!far) /* a window, which asks for none; a triangle's, with its 3 edges known */
+        return n == 3 ? sse2_rows(depth, face, stride, x0, y0, box, e, 3, d, inside, NULL)
+                      : sse2_rows(depth, face, stride, x0, y0, box, e, n, d, inside, NULL);
+    return n == 0 ? sse2_rows(depth, face, stride, x0, y0, box, e, 0, d, inside, far) /* covered */
+                  : sse2_rows(depth, face, stride, x0, y0, box, e, n, d, inside, far); /* crossed */
 }
 
 const BlockKernels SSE2_KERNELS = {sse2_draw};
