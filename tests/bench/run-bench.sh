@@ -19,7 +19,12 @@
 # no program's N threads can be N times as fast as its one here: that
 # ceiling, how many times the frames of one alone the copies drew, is
 # printed after the targets.
-# CC and BENCH_CFLAGS, when set, are shown with the machine.
+# CC and BENCH_CFLAGS, when set, are shown with the machine, and so are the
+# instructions lesson 10 and llvmpipe may use. BENCH_AS measures both as on
+# a lesser x86-64: avx2, one with AVX2 but not AVX-512 (lesson 10's AVX2
+# kernel, llvmpipe without AVX-512); sse, one without AVX (its SSE2 kernel,
+# llvmpipe with SSE4.1 at most): FAST_RASTER_SIMD and Mesa's
+# GALLIUM_OVERRIDE_CPU_CAPS, which can also be set by hand.
 # Every binary runs BENCH_ROUNDS times (3 unless set), the rounds one after
 # the other, and each row is its round with the least median: on a shared
 # machine a burst of other work slows one round of one binary, not a ratio.
@@ -39,6 +44,19 @@ model=$(lscpu 2>/dev/null | sed -n 's/^Model name: *//p' | head -n 1)
 cpus=$(nproc 2>/dev/null || echo "?")
 compiler=$(${CC:-cc} --version 2>/dev/null | head -n 1)
 echo "machine: ${model:-unknown CPU}, $cpus CPUs; compiler: ${compiler:-unknown}; flags: ${BENCH_CFLAGS:-?}"
+case ${BENCH_AS:-} in
+    '') ;;
+    avx2) FAST_RASTER_SIMD=avx2 GALLIUM_OVERRIDE_CPU_CAPS=avx # Mesa's avx: all but AVX-512
+          echo "as an x86-64 with AVX2, without AVX-512 (BENCH_AS=avx2):" ;;
+    sse) FAST_RASTER_SIMD=sse2 GALLIUM_OVERRIDE_CPU_CAPS=sse4.1 # SSE4.1 at most
+         echo "as an x86-64 without AVX (BENCH_AS=sse):" ;;
+    *) echo "run-bench.sh: BENCH_AS: '$BENCH_AS' is not avx2 or sse" >&2; exit 2 ;;
+esac
+[ -z "${FAST_RASTER_SIMD:-}" ] || export FAST_RASTER_SIMD
+[ -z "${GALLIUM_OVERRIDE_CPU_CAPS:-}" ] || export GALLIUM_OVERRIDE_CPU_CAPS
+simd=${FAST_RASTER_SIMD:+FAST_RASTER_SIMD=$FAST_RASTER_SIMD}
+caps=${GALLIUM_OVERRIDE_CPU_CAPS:+GALLIUM_OVERRIDE_CPU_CAPS=$GALLIUM_OVERRIDE_CPU_CAPS}
+echo "instructions: lesson 10's kernels ${simd:-the widest the CPU has}; llvmpipe ${caps:-all the CPU has}"
 
 rounds=${BENCH_ROUNDS:-3}
 case $rounds in

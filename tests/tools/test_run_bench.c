@@ -8,7 +8,9 @@
  * fail the run, naming the row; a BENCH_ROUNDS out of 1 to 9 is refused.
  * With lesson 10's program and more than one core, its one-thread row is
  * timed alone and in one copy per core at once, by the wall clock, and the
- * ceiling that leaves for threads is printed. */
+ * ceiling that leaves for threads is printed. BENCH_AS=avx2 or sse hands
+ * each program the instructions of a lesser x86-64 (FAST_RASTER_SIMD for
+ * lesson 10, GALLIUM_OVERRIDE_CPU_CAPS for llvmpipe), and says so. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -150,6 +152,52 @@ static void rounds_out_of_range_are_refused(void **state)
     assert_false(file_exists(path_join(dir, "lesson.n"))); /* refused before any run */
 }
 
+/* A stand-in that writes the instructions it was handed into dir/name.env. */
+static const char *env_stand_in(const char *dir, const char *name)
+{
+    char text[512];
+    snprintf(text, sizeof text,
+             "#!/bin/sh\n"
+             "echo \"${FAST_RASTER_SIMD-unset} ${GALLIUM_OVERRIDE_CPU_CAPS-unset}\" >\"$0.env\"\n"
+             "echo \"%s,small,8,8,11,100,1000,0.010,0.010,0.010,same\"\n",
+             name);
+    return write_program_in(dir, name, text);
+}
+
+static void bench_as_hands_both_the_instructions_of_a_lesser_x86_64(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("run_bench_as");
+    const char *limit = stand_in(dir, "limit", "0.001", false);
+    const char *lesson = env_stand_in(dir, "lesson");
+    const struct { const char *as, *env, *said; } tiers[] = {
+        {"sse", "sse2 sse4.1\n", "as an x86-64 without AVX (BENCH_AS=sse):"},
+        {"avx2", "avx2 avx\n", "as an x86-64 with AVX2, without AVX-512 (BENCH_AS=avx2):"},
+    };
+    for (size_t k = 0; k < sizeof tiers / sizeof tiers[0]; k++) {
+        ShellResult r = run_shell(NULL, TIMEOUT, "BENCH_AS=%s BENCH_ROUNDS=1 sh tests/bench/run-bench.sh "
+                                  "%s/out %s %s", tiers[k].as, dir, limit, lesson);
+        if (r.status != 0)
+            fail_msg("BENCH_AS=%s: status %d\n%s", tiers[k].as, r.status, r.output);
+        expect_line(r.output, tiers[k].said);
+        char *env = read_text(path_join(dir, "lesson.env"));
+        assert_string_equal(env, tiers[k].env);
+        free(env);
+        shell_result_free(&r);
+    }
+    ShellResult r = run_shell(NULL, TIMEOUT, "BENCH_ROUNDS=1 FAST_RASTER_SIMD= GALLIUM_OVERRIDE_CPU_CAPS= "
+                              "sh tests/bench/run-bench.sh %s/out %s %s", dir, limit, lesson);
+    assert_int_equal(r.status, 0);
+    expect_line(r.output, "instructions: lesson 10's kernels the widest the CPU has; llvmpipe all the "
+                          "CPU has");
+    shell_result_free(&r);
+    r = run_shell(NULL, TIMEOUT, "BENCH_AS=avx512 sh tests/bench/run-bench.sh %s/out %s %s", dir,
+                  limit, lesson);
+    assert_int_equal(r.status, 2);
+    expect_line(r.output, "run-bench.sh: BENCH_AS: 'avx512' is not avx2 or sse");
+    shell_result_free(&r);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -157,6 +205,7 @@ int main(void)
         cmocka_unit_test(rounds_that_leave_other_depth_buffers_fail_the_run),
         cmocka_unit_test(rounds_out_of_range_are_refused),
         cmocka_unit_test(the_cores_side_by_side_give_the_ceiling_for_threads),
+        cmocka_unit_test(bench_as_hands_both_the_instructions_of_a_lesser_x86_64),
     };
     return cmocka_run_group_tests_name("tools: make bench's rounds (run-bench.sh)", tests, NULL,
                                        NULL);
