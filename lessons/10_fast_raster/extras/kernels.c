@@ -97,13 +97,49 @@ static inline void sse2_edge_values(const EdgeFn *e, int x0, int y, __m128i *lo,
     *hi = _mm_add_epi32(*lo, _mm_set1_epi32(4 * e->a));
 }
 
+/* Half a row's z_w from its x and y terms, encoded as encode_depth encodes
+ * it: clamped (max, then min), scaled and rounded for a unorm format. */
+static inline __m128 sse2_z(__m128 tx, __m128 ty, __m128 offset, float unorm)
+{
+    __m128 z = _mm_add_ps(_mm_add_ps(tx, ty), offset);
+    if (unorm == 0)
+        return z;
+    z = _mm_min_ps(_mm_set1_ps(1.0f), _mm_max_ps(_mm_setzero_ps(), z));
+    return _mm_cvtepi32_ps(_mm_cvtps_epi32(_mm_mul_ps(z, _mm_set1_ps(unorm))));
+}
+
+static inline int sse2_wins(__m128 z, __m128 stored, bool reversed) /* a bit per lane */
+{
+    return _mm_movemask_ps(reversed ? _mm_cmpgt_ps(z, stored) : _mm_cmplt_ps(z, stored));
+}
+
+/* Half a row stored whole: z in the lanes whose bit (lane i: bit[i]) kept
+ * has, else what was stored (a blend by AND and OR: SSE2 has no blendv); all:
+ * every lane z. What it now holds. */
+static inline __m128 sse2_write(float *row, int32_t *f, __m128 z, __m128 stored, int kept,
+                                __m128i bit, __m128i id, bool all)
+{
+    if (all) {
+        stored = z;
+        _mm_storeu_si128((__m128i *)f, id);
+    } else {
+        __m128i m = _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(kept), bit), bit);
+        stored = _mm_or_ps(_mm_and_ps(_mm_castsi128_ps(m), z), _mm_andnot_ps(_mm_castsi128_ps(m), stored));
+        __m128i was = _mm_loadu_si128((const __m128i *)f);
+        _mm_storeu_si128((__m128i *)f, _mm_or_si128(_mm_and_si128(m, id), _mm_andnot_si128(m, was)));
+    }
+    _mm_storeu_ps(row, stored);
+    return stored;
+}
+
 /* simd.c's rows with a row in two halves of 4: its coverage (three edges held
- * in registers), z_w, codes, comparison and write, stored whole (a blend by
- * AND and OR: SSE2 has no blendv); in a block covered whole, a row that
- * passes whole needs none. */
+ * in registers), z_w, codes, comparison and write, stored whole; in a block
+ * covered whole, a row that passes whole needs no blend. half: the first half
+ * alone, box having no pixel in the other (nor is a farthest value asked). */
 static inline __attribute__((always_inline)) uint64_t
 sse2_rows(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t box,
-          const EdgeFn *e, int n, const BlockDepth *d, uint64_t *inside, float *farthest)
+          const EdgeFn *e, int n, bool half, const BlockDepth *d, uint64_t *inside,
+          float *farthest)
 {
     const float gy = d->gy, unorm = d->unorm;
     const bool reversed = d->reversed, whole = n == 0 && box == ~(uint64_t)0;
@@ -134,42 +170,25 @@ sse2_rows(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t b
                 lo = _mm_or_si128(lo, l), hi = _mm_or_si128(hi, h);
             }
             int out = _mm_movemask_ps(_mm_castsi128_ps(lo)) |
-                      _mm_movemask_ps(_mm_castsi128_ps(hi)) << 4;
+                      (half ? 0 : _mm_movemask_ps(_mm_castsi128_ps(hi)) << 4);
             covered &= ~((uint64_t)out << (8 * j));
             v0 = _mm_add_epi32(v0, down0), v1 = _mm_add_epi32(v1, down1);
             v2 = _mm_add_epi32(v2, down2), w0 = _mm_add_epi32(w0, down0);
             w1 = _mm_add_epi32(w1, down1), w2 = _mm_add_epi32(w2, down2);
         }
         __m128 ty = _mm_set1_ps(gy * (float)(y0 + j));
-        __m128 z_lo = _mm_add_ps(_mm_add_ps(tx_lo, ty), offset);
-        __m128 z_hi = _mm_add_ps(_mm_add_ps(tx_hi, ty), offset);
-        if (unorm != 0) { /* encode_depth: clamped (max, then min), scaled, rounded */
-            __m128 one = _mm_set1_ps(1.0f), zero = _mm_setzero_ps(), scale = _mm_set1_ps(unorm);
-            z_lo = _mm_cvtepi32_ps(_mm_cvtps_epi32(_mm_mul_ps(_mm_min_ps(one, _mm_max_ps(zero, z_lo)), scale)));
-            z_hi = _mm_cvtepi32_ps(_mm_cvtps_epi32(_mm_mul_ps(_mm_min_ps(one, _mm_max_ps(zero, z_hi)), scale)));
-        }
+        __m128 z_lo = sse2_z(tx_lo, ty, offset, unorm), z_hi = sse2_z(tx_hi, ty, offset, unorm);
         float *row = depth + (size_t)j * stride;
         int32_t *f = face + (size_t)j * stride;
-        __m128 lo = _mm_loadu_ps(row), hi = _mm_loadu_ps(row + 4);
-        __m128 win_lo = reversed ? _mm_cmpgt_ps(z_lo, lo) : _mm_cmplt_ps(z_lo, lo);
-        __m128 win_hi = reversed ? _mm_cmpgt_ps(z_hi, hi) : _mm_cmplt_ps(z_hi, hi);
-        int won = (_mm_movemask_ps(win_lo) | _mm_movemask_ps(win_hi) << 4) & ROW(covered, j);
+        __m128 lo = _mm_loadu_ps(row), hi = half ? lo : _mm_loadu_ps(row + 4);
+        int won = sse2_wins(z_lo, lo, reversed) | (half ? 0 : sse2_wins(z_hi, hi, reversed) << 4);
+        won &= ROW(covered, j);
         int kept = won & ROW(keep, j);
         passed |= (uint64_t)won << (8 * j);
-        if (whole && kept == 0xff) { /* the row stored as it is, no blend */
-            lo = z_lo, hi = z_hi;
-            _mm_storeu_si128((__m128i *)f, id), _mm_storeu_si128((__m128i *)(f + 4), id);
-        } else {
-            __m128i ks = _mm_set1_epi32(kept);
-            __m128i m_lo = _mm_cmpeq_epi32(_mm_and_si128(ks, bit_lo), bit_lo);
-            __m128i m_hi = _mm_cmpeq_epi32(_mm_and_si128(ks, bit_hi), bit_hi);
-            lo = _mm_or_ps(_mm_and_ps(_mm_castsi128_ps(m_lo), z_lo), _mm_andnot_ps(_mm_castsi128_ps(m_lo), lo));
-            hi = _mm_or_ps(_mm_and_ps(_mm_castsi128_ps(m_hi), z_hi), _mm_andnot_ps(_mm_castsi128_ps(m_hi), hi));
-            __m128i f_lo = _mm_loadu_si128((const __m128i *)f), f_hi = _mm_loadu_si128((const __m128i *)(f + 4));
-            _mm_storeu_si128((__m128i *)f, _mm_or_si128(_mm_and_si128(m_lo, id), _mm_andnot_si128(m_lo, f_lo)));
-            _mm_storeu_si128((__m128i *)(f + 4), _mm_or_si128(_mm_and_si128(m_hi, id), _mm_andnot_si128(m_hi, f_hi)));
-        }
-        _mm_storeu_ps(row, lo), _mm_storeu_ps(row + 4, hi);
+        bool all = whole && kept == 0xff; /* the row stored as it is, no blend */
+        lo = sse2_write(row, f, z_lo, lo, kept, bit_lo, id, all);
+        if (!half)
+            hi = sse2_write(row + 4, f + 4, z_hi, hi, kept, bit_hi, id, all);
         if (farthest) /* asked for: not by a window */
             far = reversed ? _mm_min_ps(far, _mm_min_ps(lo, hi)) : _mm_max_ps(far, _mm_max_ps(lo, hi));
     }
@@ -182,14 +201,21 @@ sse2_rows(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t b
     return passed;
 }
 
+/* A window asks for no farthest value: one 4 pixels wide or less (its box
+ * starts at its first column, but where moved left) in its first half
+ * alone; a triangle's with its 3 edges known. */
 static uint64_t sse2_draw(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t box,
                           const EdgeFn *e, int n, const BlockDepth *d, uint64_t *inside, float *far)
 {
-    if (!far) /* a window, which asks for none; a triangle's, with its 3 edges known */
-        return n == 3 ? sse2_rows(depth, face, stride, x0, y0, box, e, 3, d, inside, NULL)
-                      : sse2_rows(depth, face, stride, x0, y0, box, e, n, d, inside, NULL);
-    return n == 0 ? sse2_rows(depth, face, stride, x0, y0, box, e, 0, d, inside, far) /* covered */
-                  : sse2_rows(depth, face, stride, x0, y0, box, e, n, d, inside, far); /* crossed */
+    bool half = !(box & 0xf0f0f0f0f0f0f0f0ull);
+    if (!far && n == 3)
+        return half ? sse2_rows(depth, face, stride, x0, y0, box, e, 3, true, d, inside, NULL)
+                    : sse2_rows(depth, face, stride, x0, y0, box, e, 3, false, d, inside, NULL);
+    if (!far)
+        return half ? sse2_rows(depth, face, stride, x0, y0, box, e, n, true, d, inside, NULL)
+                    : sse2_rows(depth, face, stride, x0, y0, box, e, n, false, d, inside, NULL);
+    return n == 0 ? sse2_rows(depth, face, stride, x0, y0, box, e, 0, false, d, inside, far) /* covered */
+                  : sse2_rows(depth, face, stride, x0, y0, box, e, n, false, d, inside, far); /* crossed */
 }
 
 const BlockKernels SSE2_KERNELS = {sse2_draw};
