@@ -146,6 +146,11 @@ void bins_free(Bins *b)
     free(b);
 }
 
+static int tiles_across(int pixels) /* tiles a row or column of them needs */
+{
+    return (pixels + TILE_SIZE - 1) / TILE_SIZE;
+}
+
 /* bins_of's work when the bins are not yet t's, or not of t's size. */
 static __attribute__((noinline, cold)) Bins *bins_anew(Target *t, LessonState *s)
 {
@@ -153,8 +158,7 @@ static __attribute__((noinline, cold)) Bins *bins_anew(Target *t, LessonState *s
     Bins *b = fr->bins;
     if (b && b->target != t && (b->npoly > 0 || clearing(b)))
         fast_finish((Target *)b->target, s, NULL);
-    int tiles_x = (t->width + TILE_SIZE - 1) / TILE_SIZE;
-    int tiles_y = (t->height + TILE_SIZE - 1) / TILE_SIZE;
+    int tiles_x = tiles_across(t->width), tiles_y = tiles_across(t->height);
     if (!b || b->tiles_x != tiles_x || b->tiles_y != tiles_y) {
         bins_free(b);
         fr->bins = b = calloc(1, sizeof *b);
@@ -177,8 +181,8 @@ static __attribute__((noinline, cold)) Bins *bins_anew(Target *t, LessonState *s
 Bins *bins_of(Target *t, LessonState *s)
 {
     Bins *b = s->fast.bins;
-    if (b && b->target == t && b->tiles_x == (t->width + TILE_SIZE - 1) / TILE_SIZE &&
-        b->tiles_y == (t->height + TILE_SIZE - 1) / TILE_SIZE)
+    if (b && b->target == t && b->tiles_x == tiles_across(t->width) &&
+        b->tiles_y == tiles_across(t->height))
         return b; /* as for each polygon but the first */
     return bins_anew(t, s);
 }
