@@ -124,9 +124,11 @@ static inline __m128 sse2_write(float *row, int32_t *f, __m128 z, __m128 stored,
         _mm_storeu_si128((__m128i *)f, id);
     } else {
         __m128i m = _mm_cmpeq_epi32(_mm_and_si128(_mm_set1_epi32(kept), bit), bit);
-        stored = _mm_or_ps(_mm_and_ps(_mm_castsi128_ps(m), z), _mm_andnot_ps(_mm_castsi128_ps(m), stored));
+        __m128 mf = _mm_castsi128_ps(m);
+        stored = _mm_or_ps(_mm_and_ps(mf, z), _mm_andnot_ps(mf, stored));
         __m128i was = _mm_loadu_si128((const __m128i *)f);
-        _mm_storeu_si128((__m128i *)f, _mm_or_si128(_mm_and_si128(m, id), _mm_andnot_si128(m, was)));
+        _mm_storeu_si128((__m128i *)f,
+                         _mm_or_si128(_mm_and_si128(m, id), _mm_andnot_si128(m, was)));
     }
     _mm_storeu_ps(row, stored);
     return stored;
@@ -150,14 +152,16 @@ sse2_rows(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t b
     __m128 far = _mm_set1_ps(reversed ? INFINITY : -INFINITY);
     __m128 x_lo = _mm_add_ps(_mm_set1_ps((float)x0), _mm_set_ps(3.0f, 2.0f, 1.0f, 0.0f));
     __m128 x_hi = _mm_add_ps(x_lo, _mm_set1_ps(4.0f)); /* exact: integers below 2^24 */
-    __m128 tx_lo = _mm_add_ps(a0, _mm_mul_ps(gx, x_lo)), tx_hi = _mm_add_ps(a0, _mm_mul_ps(gx, x_hi));
+    __m128 tx_lo = _mm_add_ps(a0, _mm_mul_ps(gx, x_lo));
+    __m128 tx_hi = _mm_add_ps(a0, _mm_mul_ps(gx, x_hi));
     uint64_t passed = 0, covered = box;
     int first = __builtin_ctzll(box) / 8, last = 7 - __builtin_clzll(box) / 8;
     const EdgeFn *e1 = &e[n > 1 ? 1 : 0], *e2 = &e[n > 2 ? 2 : n > 1 ? 1 : 0];
     __m128i v0 = _mm_setzero_si128(), v1 = v0, v2 = v0, w0 = v0, w1 = v0, w2 = v0; /* lo, hi */
     __m128i down0 = v0, down1 = v0, down2 = v0;
     if (n != 0) /* else none is read */
-        sse2_edge_values(e, x0, y0 + first, &v0, &w0), sse2_edge_values(e1, x0, y0 + first, &v1, &w1),
+        sse2_edge_values(e, x0, y0 + first, &v0, &w0),
+        sse2_edge_values(e1, x0, y0 + first, &v1, &w1),
         sse2_edge_values(e2, x0, y0 + first, &v2, &w2), down0 = _mm_set1_epi32(e->b),
         down1 = _mm_set1_epi32(e1->b), down2 = _mm_set1_epi32(e2->b);
     for (int j = first; j <= last; j++) {
@@ -190,7 +194,8 @@ sse2_rows(float *depth, int32_t *face, size_t stride, int x0, int y0, uint64_t b
         if (!half)
             hi = sse2_write(row + 4, f + 4, z_hi, hi, kept, bit_hi, id, all);
         if (farthest) /* asked for: not by a window */
-            far = reversed ? _mm_min_ps(far, _mm_min_ps(lo, hi)) : _mm_max_ps(far, _mm_max_ps(lo, hi));
+            far = reversed ? _mm_min_ps(far, _mm_min_ps(lo, hi))
+                           : _mm_max_ps(far, _mm_max_ps(lo, hi));
     }
     *inside = covered;
     if (farthest) {
@@ -214,8 +219,9 @@ static uint64_t sse2_draw(float *depth, int32_t *face, size_t stride, int x0, in
     if (!far)
         return half ? sse2_rows(depth, face, stride, x0, y0, box, e, n, true, d, inside, NULL)
                     : sse2_rows(depth, face, stride, x0, y0, box, e, n, false, d, inside, NULL);
-    return n == 0 ? sse2_rows(depth, face, stride, x0, y0, box, e, 0, false, d, inside, far) /* covered */
-                  : sse2_rows(depth, face, stride, x0, y0, box, e, n, false, d, inside, far); /* crossed */
+    if (n == 0) /* a block covered whole */
+        return sse2_rows(depth, face, stride, x0, y0, box, e, 0, false, d, inside, far);
+    return sse2_rows(depth, face, stride, x0, y0, box, e, n, false, d, inside, far); /* crossed */
 }
 
 const BlockKernels SSE2_KERNELS = {sse2_draw};
