@@ -49,7 +49,8 @@ bool hold_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext
     if (!fr->held && !(fr->held = calloc(1, sizeof *fr->held)))
         return false;
     Held *h = fr->held;
-    if (h->ntri >= (h->hold ? h->hold : least_hold(fr)))
+    h->hold = h->hold ? h->hold : least_hold(fr); /* the first face held: the least */
+    if (h->ntri >= h->hold)
         fast_finish(t, s, NULL);
     void *face = h->face, *v = h->v, *clip = h->clip, *tri = h->tri;
     size_t n = (size_t)f->n;
@@ -119,7 +120,7 @@ void set_up_held_faces(Target *t, LessonState *s)
     /* The next finish, as bins_full weighs the bins: after least_hold when
      * these faces were heaped on few tiles, else after twice as many as now
      * (up to HOLD_MAX): fewer passes over the tiles. */
-    size_t now = h->hold ? h->hold : least_hold(fr), more = 2 * now;
+    size_t more = 2 * h->hold;
     bool heaped = bins_heaped(fr->bins->tiles_x * fr->bins->tiles_y, filled, n);
     h->hold = heaped ? least_hold(fr) : more < HOLD_MAX ? more : HOLD_MAX;
     /* Only now: the runs still going copied the engine, this flag with it. */
