@@ -200,10 +200,10 @@ static uint64_t box_mask(int left, int right, int top, int bottom)
 }
 
 /* When p is small (corners 16 pixels apart at most) and its part of the tile
- * (x0 .. x1 - 1, y0 .. y1 - 1) fits in 16 x 16 pixels: its up to 4 pieces of 8 x 8, each
- * drawn by the kernel in the 8 x 8 window at its first pixel, moved left to stay in the
- * tile (no other thread's pixel). p is near its windows: no edge's values there leave
- * 32 bits, none sorted out. False: p is larger, or a cutout, kept by its place in a block. */
+ * (x0 .. x1 - 1, y0 .. y1 - 1) fits in 16 x 16 pixels: in one window 16 wide at its first
+ * pixel (w->wide), or its up to 4 pieces of 8 x 8 each in the window 8 wide at its first,
+ * moved left to stay in the tile (no other thread's pixel). p is near its windows: no edge's
+ * values there leave 32 bits. False: p is larger, or a cutout, kept by its place in a block. */
 static bool draw_windows(TileWork *w, const Poly *p, const EdgeFn *e, int x0, int y0, int x1,
                          int y1)
 {
@@ -211,6 +211,14 @@ static bool draw_windows(TileWork *w, const Poly *p, const EdgeFn *e, int x0, in
         w->tx1 - w->tx0 < BLOCK_SIZE || p->depth.keep != ~(uint64_t)0)
         return false;
     const BlockKernels *kernels = p->plain ? &PLAIN_KERNELS : w->k; /* the screen holds it */
+    if (w->wide && !p->plain && w->tx1 - w->tx0 >= 2 * BLOCK_SIZE) {
+        int left = imin(x0, w->tx1 - 2 * BLOCK_SIZE);
+        size_t i = (size_t)(y0 - w->oy) * w->stride + (size_t)(left - w->ox);
+        w->wide(w->depth + i, w->face + i, w->stride, left, y0,
+                ((uint32_t)1 << (x1 - left)) - ((uint32_t)1 << (x0 - left)), y1 - y0, e, (int)p->n,
+                &p->depth, w->t->counting ? &w->stats : NULL);
+        return true;
+    }
     for (int y = y0; y < y1; y += BLOCK_SIZE)
         for (int x = x0; x < x1; x += BLOCK_SIZE) {
             int left = imin(x, w->tx1 - BLOCK_SIZE); /* the window's first column */

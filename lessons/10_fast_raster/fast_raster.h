@@ -91,8 +91,12 @@ typedef struct { /* simd.c's AVX2; extras/: plain C, SSE2, AVX-512: the same bit
 } BlockKernels;
 #define ROW(mask, j) ((int)((mask) >> (8 * (j)) & 0xff)) /* row j's 8 bits */
 
+/* A small polygon's window 16 wide (extras/wide.c): draw's test of columns cols (bit i:
+ * x0 + i) of rows y0 .. y0 + rows - 1, a row at once, n >= 1; counts to *counts if any. */
+typedef void WideKernel(float *depth, int32_t *face, size_t stride, int x0, int y0, uint32_t cols,
+                        int rows, const EdgeFn *e, int n, const BlockDepth *d, FragmentStats *counts);
 typedef struct { /* what one thread needs to draw a tile */
-    Target *t; LessonState *s; const FastRaster *fr; const BlockKernels *k;
+    Target *t; LessonState *s; const FastRaster *fr; const BlockKernels *k; WideKernel *wide;
     FragmentStats stats;
     int tx0, ty0, tx1, ty1; /* its pixels on the screen */
     float *depth; int32_t *face; /* pixel (x, y): [(y - oy) stride + x - ox] */

@@ -7,7 +7,9 @@
  * a window asks), which each kernel draws by a copy of its own for 3 edges,
  * and a box in a quarter of the rounds is a window's: columns from the first,
  * 1 to 8 of them (SSE2 draws one of 4 or fewer in half its registers).
- * A kernel the machine lacks (AVX2) is skipped. */
+ * A kernel's window 16 pixels wide (AVX2's and AVX-512's wide) leaves the bits
+ * and counts of plain C's 8 x 8 windows over the same pixels, from any column.
+ * A kernel the machine lacks (AVX2, AVX-512) is skipped. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -186,11 +188,79 @@ static void every_kernel_tests_depth_as_plain_c(void **state_)
     }
 }
 
+#define WIDE_STRIDE 40 /* floats per row of a window 16 wide, and more */
+typedef struct { float depth[16 * WIDE_STRIDE]; int32_t face[16 * WIDE_STRIDE]; } Window;
+
+/* A window 16 wide drawn by wide, and by plain C as its 4 pieces of 8 x 8: the same
+ * depths and faces, and the same counts. */
+static void wide_window_as_plain_c(WideKernel *wide_kernel, const char *name, int round)
+{
+    static const DepthFormat FORMATS[3] = {UNORM16, UNORM24, FLOAT32};
+    static const float UNORM[3] = {65535.0f, 16777215.0f, 0.0f};
+    int f = between(0, 2);
+    BlockDepth d = {(float)(unit() * 1.2 - 0.1), (float)((unit() - 0.5) * 1e-3),
+                    (float)((unit() - 0.5) * 1e-3), (float)((unit() - 0.5) * 1e-5),
+                    .unorm = UNORM[f], .reversed = next() & 1, .face = between(0, 1000),
+                    .keep = ~(uint64_t)0, .format = FORMATS[f]};
+    int x0 = between(0, 16000), y0 = between(0, 16000), n = between(1, 5);
+    EdgeFn e[5];
+    for (int j = 0; j < n; j++) { /* values over the 16 x 16 pixels in 32 bits */
+        int32_t size = between(1, 1 << between(0, 25));
+        e[j].a = between(-size, size), e[j].b = between(-size, size);
+        int32_t reach = 15 * (abs(e[j].a) + abs(e[j].b)), g = between(-reach, reach);
+        e[j].c = g - (int64_t)e[j].a * x0 - (int64_t)e[j].b * y0;
+    }
+    int left = between(0, 15), right = between(left + 1, 16), rows = between(1, 16);
+    uint32_t cols = ((uint32_t)1 << right) - ((uint32_t)1 << left);
+    Window start, plain, wide;
+    for (int i = 0; i < 16 * WIDE_STRIDE; i++)
+        start.depth[i] = random_stored(&d), start.face[i] = between(-1, 1000);
+    plain = start, wide = start;
+    FragmentStats want = {0}, got = {0};
+    for (int by = 0; by < 16; by += 8)
+        for (int bx = 0; bx < 16; bx += 8) {
+            uint64_t box = 0, inside;
+            for (int j = by; j < by + 8 && j < rows; j++)
+                box |= (uint64_t)(cols >> bx & 0xff) << (8 * (j - by));
+            if (box == 0)
+                continue;
+            size_t i = (size_t)by * WIDE_STRIDE + (size_t)bx;
+            uint64_t passed = PLAIN_KERNELS.draw(plain.depth + i, plain.face + i, WIDE_STRIDE,
+                                                 x0 + bx, y0 + by, box, e, n, &d, &inside, NULL);
+            want.tested += (uint64_t)__builtin_popcountll(inside);
+            want.passed += (uint64_t)__builtin_popcountll(passed);
+        }
+    bool counted = next() & 1; /* else counts NULL, as when nothing is counted */
+    wide_kernel(wide.depth, wide.face, WIDE_STRIDE, x0, y0, cols, rows, e, n, &d,
+                counted ? &got : NULL);
+    if (memcmp(&wide, &plain, sizeof wide) != 0)
+        fail_msg("round %d: %s's wide window left other depths or faces than plain C", round,
+                 name);
+    if (counted && (got.tested != want.tested || got.passed != want.passed))
+        fail_msg("round %d: %s's wide window counted %llu tested, %llu passed; plain C %llu, %llu",
+                 round, name, (unsigned long long)got.tested, (unsigned long long)got.passed,
+                 (unsigned long long)want.tested, (unsigned long long)want.passed);
+}
+
+static void every_wide_window_tests_as_plain_c_windows(void **state_)
+{
+    (void)state_;
+    static const Simd SIMD[2] = {SIMD_AVX2, SIMD_AVX512};
+    static const char *const NAME[2] = {"avx2", "avx512"};
+    for (int j = 0; j < 2 && simd_best() >= SIMD[j]; j++) {
+        if (!wide_of(SIMD[j]))
+            fail_msg("%s has no kernel for windows 16 wide", NAME[j]);
+        for (int round = 0; round < ROUNDS; round++)
+            wide_window_as_plain_c(wide_of(SIMD[j]), NAME[j], round);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(every_kernel_covers_the_pixels_of_a_brute_force),
         cmocka_unit_test(every_kernel_tests_depth_as_plain_c),
+        cmocka_unit_test(every_wide_window_tests_as_plain_c_windows),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -1,8 +1,9 @@
 /* avx512.c: lesson 10's block kernel with AVX-512, shown but not taught:
  * simd.c's AVX2 kernel two block rows at a time, in one register of 16, and
  * its writes masked (no blend, no read of the faces first); compiled apart
- * for a window's triangle, which asks for no farthest value. The same bits as
- * plain C: z_w in the same order, mul then add, rintf's rounding. */
+ * for a window's triangle, which asks for no farthest value (a window 16
+ * wide: extras/wide.c). The same bits as plain C: z_w in the same order, mul
+ * then add, rintf's rounding. */
 #include "engine.h"
 
 #include <math.h>

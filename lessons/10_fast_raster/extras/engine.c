@@ -332,6 +332,7 @@ void tile_work_begin(TileWork *w, Target *t, LessonState *s)
     const FastRaster *fr = &s->fast;
     /* field by field: a compound literal would clear the tile's memory too */
     w->t = t, w->s = s, w->fr = fr, w->k = kernels_of(fr->count ? SIMD_NONE : fr->simd);
+    w->wide = wide_of(fr->count ? SIMD_NONE : fr->simd);
     w->stats = (FragmentStats){0};
     w->hiz = s->hiz && s->hiz->tile == BLOCK_SIZE ? &w->own : NULL;
     if (w->hiz)

@@ -1,6 +1,7 @@
 /* engine.h: what lesson 10's extras/ files share among themselves, besides
  * what fast_raster.h declares: the faces held back for the threads to set
- * up (held.c), the bins' memory (engine.c), the kernels' choice (kernels.c). */
+ * up (held.c), the bins' memory (engine.c), the kernels' choice (kernels.c), the
+ * windows 16 wide (wide.c). */
 #ifndef ENGINE_H
 #define ENGINE_H
 
@@ -17,6 +18,8 @@ bool bins_heaped(int tiles, Bins *const *bins, int n);
 bool grow_array(void **items, size_t *cap, size_t need, size_t size);
 
 extern const BlockKernels SSE2_KERNELS, AVX2_KERNELS, AVX512_KERNELS; /* simd.c, avx512.c */
+WideKernel avx2_wide, avx512_wide;         /* wide.c */
+WideKernel *wide_of(Simd simd);            /* NULL: a small polygon in windows of 8 x 8 */
 Simd simd_best(void);                      /* the widest this machine has */
 const BlockKernels *kernels_of(Simd simd); /* PLAIN_KERNELS without SIMD */
 

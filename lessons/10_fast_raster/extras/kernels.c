@@ -242,6 +242,18 @@ const BlockKernels *kernels_of(Simd simd)
     return &PLAIN_KERNELS;
 }
 
+WideKernel *wide_of(Simd simd)
+{
+#if defined(__x86_64__)
+    if (simd == SIMD_AVX512)
+        return avx512_wide;
+    if (simd == SIMD_AVX2)
+        return avx2_wide;
+#endif
+    (void)simd;
+    return NULL;
+}
+
 Simd simd_best(void)
 {
 #if defined(__x86_64__)
