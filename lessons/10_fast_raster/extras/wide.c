@@ -21,6 +21,7 @@ AVX512 static inline __m512i edge_row(const EdgeFn *e, int x0, int y, __m512i la
                             _mm512_mullo_epi32(lanes, _mm512_set1_epi32(e->a)));
 }
 
+/* A window 16 wide, a row in one register: pairs' steps (avx512.c), writes under a mask. */
 AVX512 static inline __attribute__((always_inline)) void
 rows16(float *depth, int32_t *face, size_t stride, int x0, int y0, uint32_t cols, int rows,
        const EdgeFn *e, int n, const BlockDepth *d, FragmentStats *counts)
@@ -80,8 +81,8 @@ AVX2 static inline __m256i edge_half(const EdgeFn *e, int x0, int y)
                                                _mm256_set1_epi32(e->a)));
 }
 
-/* z_w's 8 values (encoded) tested against row[0 .. 7] where in has a bit, the
- * winners written with a blend, as simd.c's rows: their bits. */
+/* z_w's 8 values, encoded as encode_depth does, tested against row[0 .. 7] where
+ * in has a bit, the winners written with a blend as simd.c's rows: their bits. */
 AVX2 static inline unsigned test_half(float *row, int32_t *face, __m256 z, unsigned in,
                                       float unorm, bool reversed, __m256i id)
 {
