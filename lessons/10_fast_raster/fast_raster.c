@@ -210,7 +210,6 @@ static bool draw_windows(TileWork *w, const Poly *p, const EdgeFn *e, int x0, in
     if (!p->small || x1 - x0 > 2 * BLOCK_SIZE || y1 - y0 > 2 * BLOCK_SIZE ||
         w->tx1 - w->tx0 < BLOCK_SIZE || p->depth.keep != ~(uint64_t)0)
         return false;
-    const BlockKernels *kernels = p->plain ? &PLAIN_KERNELS : w->k; /* the screen holds it */
     if (w->wide && !p->plain && w->tx1 - w->tx0 >= 2 * BLOCK_SIZE) {
         int left = imin(x0, w->tx1 - 2 * BLOCK_SIZE);
         size_t i = (size_t)(y0 - w->oy) * w->stride + (size_t)(left - w->ox);
@@ -219,6 +218,7 @@ static bool draw_windows(TileWork *w, const Poly *p, const EdgeFn *e, int x0, in
                 &p->depth, w->t->counting ? &w->stats : NULL);
         return true;
     }
+    const BlockKernels *kernels = p->plain ? &PLAIN_KERNELS : w->k; /* the screen holds it */
     for (int y = y0; y < y1; y += BLOCK_SIZE)
         for (int x = x0; x < x1; x += BLOCK_SIZE) {
             int left = imin(x, w->tx1 - BLOCK_SIZE); /* the window's first column */

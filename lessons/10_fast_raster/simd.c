@@ -92,9 +92,8 @@ AVX2 static uint64_t avx2_draw(float *depth, int32_t *face, size_t stride, int x
                                uint64_t box, const EdgeFn *e, int n, const BlockDepth *d,
                                uint64_t *inside, float *farthest)
 {
-    if (!farthest) /* a window, which asks for none; a triangle's, with its 3 edges known */
-        return n == 3 ? rows(depth, face, stride, x0, y0, box, e, 3, d, inside, NULL)
-                      : rows(depth, face, stride, x0, y0, box, e, n, d, inside, NULL);
+    if (!farthest) /* a window, which asks for none */
+        return rows(depth, face, stride, x0, y0, box, e, n, d, inside, NULL);
     return n == 0 ? rows(depth, face, stride, x0, y0, box, e, 0, d, inside, farthest)  /* covered */
                   : rows(depth, face, stride, x0, y0, box, e, n, d, inside, farthest); /* crossed */
 }

@@ -1,10 +1,10 @@
 /* test_kernels.c: lesson 10's block kernel (fast_raster.h) gives the same
- * bits in plain C, SSE2 and AVX2: the pixels of a box inside 0 to 5 random
+ * bits in plain C, SSE2, AVX2 and AVX-512: the pixels of a box inside 0 to 5 random
  * edges (and those of a brute force in 64-bit integers), then the depth test
  * of random planes over random buffers in every format and mapping, cutout or
  * not: which pixels passed, the depth and face buffers after it, and the
  * block's farthest value; half the time none is asked for (farthest NULL, as
- * a window asks), which each kernel draws by a copy of its own for 3 edges,
+ * a window asks), which SSE2 draws by a copy of its own for 3 edges,
  * and a box in a quarter of the rounds is a window's: columns from the first,
  * 1 to 8 of them (SSE2 draws one of 4 or fewer in half its registers).
  * A kernel's window 16 pixels wide (AVX2's and AVX-512's wide) leaves the bits

@@ -1,9 +1,9 @@
 /* avx512.c: lesson 10's block kernel with AVX-512, shown but not taught:
  * simd.c's AVX2 kernel two block rows at a time, in one register of 16, and
- * its writes masked (no blend, no read of the faces first); compiled apart
- * for a window's triangle, which asks for no farthest value (a window 16
- * wide: extras/wide.c). The same bits as plain C: z_w in the same order, mul
- * then add, rintf's rounding. */
+ * its writes masked (no blend, no read of the faces first); a window asks
+ * for no farthest value (8 x 8 only in a tile narrower than 16; else a window
+ * 16 wide, extras/wide.c). The same bits as plain C: z_w in the same order,
+ * mul then add, rintf's rounding. */
 #include "engine.h"
 
 #include <math.h>
@@ -109,8 +109,7 @@ AVX512 static uint64_t avx512_draw(float *depth, int32_t *face, size_t stride, i
     if (farthest) /* a block, covered whole or crossed */
         return n == 0 ? pairs(depth, face, stride, x0, y0, box, e, 0, d, inside, farthest)
                       : pairs(depth, face, stride, x0, y0, box, e, n, d, inside, farthest);
-    return n == 3 ? pairs(depth, face, stride, x0, y0, box, e, 3, d, inside, NULL) /* a window */
-                  : pairs(depth, face, stride, x0, y0, box, e, n, d, inside, NULL);
+    return pairs(depth, face, stride, x0, y0, box, e, n, d, inside, NULL); /* a window */
 }
 
 const BlockKernels AVX512_KERNELS = {avx512_draw};
