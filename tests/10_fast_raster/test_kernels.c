@@ -123,6 +123,18 @@ static void every_kernel_covers_the_pixels_of_a_brute_force(void **state_)
 }
 
 
+/* A random plane in a random format and mapping, its pixels kept by keep. */
+static BlockDepth random_depth(uint64_t keep)
+{
+    static const DepthFormat FORMATS[3] = {UNORM16, UNORM24, FLOAT32};
+    static const float UNORM[3] = {65535.0f, 16777215.0f, 0.0f};
+    int f = between(0, 2);
+    return (BlockDepth){(float)(unit() * 1.2 - 0.1), (float)((unit() - 0.5) * 1e-3),
+                        (float)((unit() - 0.5) * 1e-3), (float)((unit() - 0.5) * 1e-5),
+                        .unorm = UNORM[f], .reversed = next() & 1, .face = between(0, 1000),
+                        .keep = keep, .format = FORMATS[f]};
+}
+
 static float random_stored(const BlockDepth *d)
 {
     float z = (float)unit();
@@ -135,15 +147,8 @@ static void every_kernel_tests_depth_as_plain_c(void **state_)
     const BlockKernels *k[3];
     const char *name[3];
     int nk = others(k, name);
-    static const DepthFormat FORMATS[3] = {UNORM16, UNORM24, FLOAT32};
-    static const float UNORM[3] = {65535.0f, 16777215.0f, 0.0f};
     for (int round = 0; round < ROUNDS; round++) {
-        int f = between(0, 2);
-        BlockDepth d = {(float)(unit() * 1.2 - 0.1), (float)((unit() - 0.5) * 1e-3),
-                        (float)((unit() - 0.5) * 1e-3), (float)((unit() - 0.5) * 1e-5),
-                        .unorm = UNORM[f], .reversed = next() & 1, .face = between(0, 1000),
-                        .keep = next() & 1 ? ~(uint64_t)0 : 0xf0f0f0f00f0f0f0full,
-                        .format = FORMATS[f]};
+        BlockDepth d = random_depth(next() & 1 ? ~(uint64_t)0 : 0xf0f0f0f00f0f0f0full);
         int x0 = 8 * between(0, 2000), y0 = 8 * between(0, 2000), n = between(0, 5);
         EdgeFn e[5];
         random_edges(e, n, x0, y0);
@@ -195,13 +200,7 @@ typedef struct { float depth[16 * WIDE_STRIDE]; int32_t face[16 * WIDE_STRIDE]; 
  * depths and faces, and the same counts. */
 static void wide_window_as_plain_c(WideKernel *wide_kernel, const char *name, int round)
 {
-    static const DepthFormat FORMATS[3] = {UNORM16, UNORM24, FLOAT32};
-    static const float UNORM[3] = {65535.0f, 16777215.0f, 0.0f};
-    int f = between(0, 2);
-    BlockDepth d = {(float)(unit() * 1.2 - 0.1), (float)((unit() - 0.5) * 1e-3),
-                    (float)((unit() - 0.5) * 1e-3), (float)((unit() - 0.5) * 1e-5),
-                    .unorm = UNORM[f], .reversed = next() & 1, .face = between(0, 1000),
-                    .keep = ~(uint64_t)0, .format = FORMATS[f]};
+    BlockDepth d = random_depth(~(uint64_t)0); /* a window's: no cutout */
     int x0 = between(0, 16000), y0 = between(0, 16000), n = between(1, 5);
     EdgeFn e[5];
     for (int j = 0; j < n; j++) { /* values over the 16 x 16 pixels in 32 bits */
