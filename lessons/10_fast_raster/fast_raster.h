@@ -120,8 +120,8 @@ void bins_empty(Bins *b); /* and the bins chained after it, unchained */
 bool tile_busy(const Bins *b, int tile); /* a polygon in it, in b or after */
 void draw_fast_face(Target *t, LessonState *s, const ScreenFace *f, const DrawContext *ctx);
 void set_up_held_faces(Target *t, LessonState *s); /* held.c: by the threads, in chained bins */
-/* pool.c: run(args + k size) for k = 0 .. n - 1 at once: 0 here, the others on *pool's
- * threads (started when first needed, then kept); back when all are done. Not from them. */
+/* pool.c: run(args + k size) for k = 0 .. n - 1 at once, each by the first thread to take it:
+ * 0 by this one, not one of *pool's (started when needed, then kept); back when all are done. */
 void run_threads(Pool **pool, int n, void *(*run)(void *), void *args, size_t size);
 BlockDepth block_depth(const Primitive *p, bool *plain); /* plain: not finite */
 Primitive plane_of(const TileWork *w, const BlockDepth *d); /* for hiz_bound: d's plane */

@@ -17,7 +17,9 @@
 #include <cmocka.h>
 
 #include <pthread.h>
+#include <stdatomic.h>
 #include <string.h>
+#include <time.h>
 
 #include "engine.h" /* extras/: simd_best */
 #include "fast_raster.h"
@@ -134,18 +136,22 @@ static void blocks_skipped_uncounted_draw_the_same_bits(void **unused)
         target_free(&t[k]);
 }
 
-/* run_threads (extras/pool.c): every share once, share 0 on the calling
- * thread, the others on the pool's threads, which are kept from one call to
- * the next, more started when a call has more shares, none when it has one.
- * The pool holds 255 threads at most (--threads: 1 to 256): shares past
- * them are run by the calling thread. */
-typedef struct { pthread_t caller; int runs; bool here; } Share;
+/* run_threads (extras/pool.c): every share once, each by the first thread
+ * to take it, share 0 by the calling thread; the pool's threads, kept from
+ * one call to the next (more started when a call has more shares, none when
+ * it has one, 255 at most: --threads 1 to 256), take the others at once.
+ * Share 0 waits till every other share has started: so they ran on the
+ * pool's threads, beside it, whichever took which. */
+typedef struct { pthread_t caller, ran_on; int runs; int n; atomic_int *started; } Share;
 
 static void *note_share(void *arg)
 {
     Share *sh = arg;
     sh->runs++;
-    sh->here = pthread_equal(pthread_self(), sh->caller);
+    sh->ran_on = pthread_self();
+    atomic_fetch_add(sh->started, 1);
+    for (int ms = 0; sh->n > 0 && atomic_load(sh->started) < sh->n && ms < 10000; ms++)
+        nanosleep(&(struct timespec){0, 1000000}, NULL); /* share 0: 10 s at most */
     return NULL;
 }
 
@@ -157,25 +163,31 @@ static void threads_are_kept_and_run_each_share_once(void **unused)
     for (size_t c = 0; c < sizeof shares / sizeof *shares; c++) {
         int n = shares[c];
         static Share sh[300];
+        atomic_int started;
+        atomic_init(&started, 0);
         for (int k = 0; k < n; k++)
-            sh[k] = (Share){pthread_self(), 0, false};
+            sh[k] = (Share){pthread_self(), pthread_self(), 0, k == 0 ? n : 0, &started};
         run_threads(&pool, n, note_share, sh, sizeof *sh);
+        if (n > 1 && atomic_load(&started) != n)
+            fail_msg("%d shares: %d started", n, atomic_load(&started));
         for (int k = 0; k < n; k++) {
             if (sh[k].runs != 1)
                 fail_msg("%d shares: share %d ran %d times", n, k, sh[k].runs);
-            if (sh[k].here != (k == 0 || k > 255))
+            if (pthread_equal(sh[k].ran_on, sh[k].caller) != (k == 0))
                 fail_msg("%d shares: share %d ran on %s", n, k,
-                         sh[k].here ? "the calling thread" : "another thread");
+                         k == 0 ? "another thread" : "the calling thread, after share 0");
         }
         if (c == 0 && !pool)
             fail_msg("3 shares: no pool was made");
     }
     pool_free(pool);
     Pool *none = NULL; /* one share: no pool, no thread */
-    Share one = {pthread_self(), 0, false};
+    atomic_int started;
+    atomic_init(&started, 0);
+    Share one = {pthread_self(), pthread_self(), 0, 0, &started};
     run_threads(&none, 1, note_share, &one, sizeof one);
     assert_null(none);
-    assert_true(one.runs == 1 && one.here);
+    assert_true(one.runs == 1 && pthread_equal(one.ran_on, one.caller));
 }
 
 /* bins_full (extras/engine.c): the bins are drawn before the next polygon

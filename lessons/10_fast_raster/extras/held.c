@@ -2,10 +2,10 @@
  * thread, lesson 07's set-up of each face (clip, plane, snap, edges, bins)
  * would leave the other threads waiting: so draw_fast_face only copies the
  * face, and fast_finish hands the faces held back to the threads in as many
- * runs, in order. Each thread sets its run up with a copy of the engine
- * (lesson 07's code keeps the plane of the triangle being drawn in it) into
- * bins of its own; the tiles then take the bins one run after the other,
- * so every polygon is drawn in the order the faces came. */
+ * runs, in order. Each run is set up, by the first thread free, with a copy
+ * of the engine (lesson 07's code keeps the plane of the triangle being
+ * drawn in it) into bins of its own; the tiles then take the bins one run
+ * after the other, so every polygon is drawn in the order the faces came. */
 #include "engine.h"
 
 #include <stdlib.h>

@@ -1,13 +1,19 @@
 /* pool.c: lesson 10's threads, shown but not taught (fast_raster.h,
  * run_threads). Started at the first finish with more than one thread, they
- * are kept: each waits for the next work, spinning a while before it
- * sleeps, as a thread asleep may take 50 microseconds or more to wake,
- * fast_finish hands out two works one after the other (the held faces'
- * set-up, then the tiles), and while a frame's faces are held the next
- * finish comes a fraction of a millisecond later (held.c); the calling
- * thread, its share done, spins too before it sleeps till the others are
- * done. A thread not started leaves its share to the calling thread; the
- * browser's build, which has no threads, draws so. */
+ * are kept. A work is handed out in shares; each thread, the calling one
+ * first, takes the next share not yet taken till none is left, so a thread
+ * the system keeps from running (the cores shared with other work) leaves
+ * its share to another, and none waits for it. Between works each waits,
+ * spinning a while before it sleeps, as a thread asleep may take 50
+ * microseconds or more to wake, fast_finish hands out two works one after
+ * the other (the held faces' set-up, then the tiles), and while a frame's
+ * faces are held the next finish comes a fraction of a millisecond later
+ * (held.c); the calling thread, its shares done, spins too before it sleeps
+ * till the others are done. A spin that ended in sleep halves the next, one
+ * that found its work doubles it (SPINS at most): on a busy machine, where a
+ * thread spinning keeps a core from the thread with work, the spins die out.
+ * With no thread (the browser's build has none), the calling thread runs
+ * every share. */
 #include "engine.h"
 
 #include <pthread.h>
@@ -17,18 +23,19 @@
 #include <emmintrin.h> /* _mm_pause */
 #endif
 
-#define SPINS 16000    /* looks for work before a thread sleeps: 0.4 ms on a Zen 5 */
+#define SPINS 16000    /* looks for work before a thread sleeps: 0.4 ms on a Zen 5, at most */
 #define POOL_MAX 255   /* threads besides the calling one (--threads: 1 to 256) */
 
-typedef struct { Pool *pool; int k; unsigned seen; pthread_t id; } Worker; /* thread k */
+typedef struct { Pool *pool; unsigned seen; int spins; pthread_t id; } Worker;
 
 struct Pool {
     pthread_mutex_t lock;
     pthread_cond_t go, done; /* work handed out; the last share done */
     atomic_uint round;       /* one more for each work handed out */
-    atomic_int busy;         /* threads not done with this round's shares */
+    atomic_int busy;         /* shares taken and not yet done */
     bool quit, refused;      /* refused: a thread could not start (none is tried again) */
     void *(*run)(void *); char *args; size_t size; int n; /* the round's work */
+    int taken, spins;        /* shares taken (under the lock); the calling thread's spin */
     int workers; Worker worker[POOL_MAX]; /* started: threads 1 .. workers */
 };
 
@@ -39,14 +46,36 @@ static void pause_a_moment(void)
 #endif
 }
 
-/* Thread k: run(args + k size) once in each round whose n is above k; until quit. */
+/* The next spin, after one that found what it waited for (ended) or not. */
+static int next_spin(int spins, bool ended)
+{
+    return ended ? (spins * 2 + 16 < SPINS ? spins * 2 + 16 : SPINS) : spins / 2;
+}
+
+/* The round's shares not yet taken, one after another, here; p->lock held. */
+static void take_shares(Pool *p)
+{
+    while (p->taken < p->n) {
+        void *share = p->args + (size_t)p->taken++ * p->size;
+        void *(*run)(void *) = p->run;
+        atomic_fetch_add(&p->busy, 1);
+        pthread_mutex_unlock(&p->lock);
+        run(share);
+        pthread_mutex_lock(&p->lock);
+        if (atomic_fetch_sub(&p->busy, 1) == 1)
+            pthread_cond_signal(&p->done);
+    }
+}
+
+/* A pool thread: the shares it takes of each round; until quit. */
 static void *work(void *arg)
 {
     Worker *w = arg;
     Pool *p = w->pool;
     for (;;) {
-        for (int i = 0; i < SPINS && atomic_load(&p->round) == w->seen; i++)
+        for (int i = 0; i < w->spins && atomic_load(&p->round) == w->seen; i++)
             pause_a_moment();
+        w->spins = next_spin(w->spins, atomic_load(&p->round) != w->seen);
         pthread_mutex_lock(&p->lock);
         while (atomic_load(&p->round) == w->seen && !p->quit)
             pthread_cond_wait(&p->go, &p->lock);
@@ -55,16 +84,7 @@ static void *work(void *arg)
             return NULL;
         }
         w->seen = atomic_load(&p->round);
-        bool mine = w->k < p->n;
-        void *(*run)(void *) = p->run;
-        void *share = p->args + (size_t)w->k * p->size;
-        pthread_mutex_unlock(&p->lock);
-        if (!mine)
-            continue;
-        run(share);
-        pthread_mutex_lock(&p->lock);
-        if (atomic_fetch_sub(&p->busy, 1) == 1)
-            pthread_cond_signal(&p->done);
+        take_shares(p);
         pthread_mutex_unlock(&p->lock);
     }
 }
@@ -77,6 +97,7 @@ static Pool *pool_new(void) /* no thread yet; NULL: out of memory */
     pthread_mutex_init(&p->lock, NULL);
     pthread_cond_init(&p->go, NULL), pthread_cond_init(&p->done, NULL);
     atomic_init(&p->round, 0), atomic_init(&p->busy, 0);
+    p->spins = SPINS;
     return p;
 }
 
@@ -87,32 +108,28 @@ void run_threads(Pool **pool, int n, void *(*run)(void *), void *args, size_t si
     Pool *p = *pool;
     while (p && p->workers < n - 1 && p->workers < POOL_MAX && !p->refused) {
         Worker *w = &p->worker[p->workers]; /* waits for the next round, not the last */
-        *w = (Worker){.pool = p, .k = p->workers + 1, .seen = atomic_load(&p->round)};
+        *w = (Worker){.pool = p, .seen = atomic_load(&p->round), .spins = SPINS};
         p->refused = pthread_create(&w->id, NULL, work, w) != 0;
         p->workers += !p->refused;
     }
-    int helped = p ? p->workers : 0; /* shares 1 .. helped on the pool's threads */
-    if (helped > n - 1)
-        helped = n - 1;
-    if (helped > 0) {
-        pthread_mutex_lock(&p->lock);
-        p->run = run, p->args = args, p->size = size, p->n = helped + 1;
-        atomic_store(&p->busy, helped);
-        atomic_fetch_add(&p->round, 1);
-        pthread_cond_broadcast(&p->go);
-        pthread_mutex_unlock(&p->lock);
+    if (n < 2 || !p || p->workers == 0) { /* no thread: every share here, in order */
+        for (int k = 0; k < n; k++)
+            run((char *)args + (size_t)k * size);
+        return;
     }
-    run(args); /* share 0 */
-    for (int k = helped + 1; k < n; k++) /* no thread for them: here, in order */
-        run((char *)args + (size_t)k * size);
-    if (helped > 0) { /* spinning a moment first: the others are near done */
-        for (int i = 0; i < SPINS && atomic_load(&p->busy) > 0; i++)
-            pause_a_moment();
-        pthread_mutex_lock(&p->lock);
-        while (atomic_load(&p->busy) > 0)
-            pthread_cond_wait(&p->done, &p->lock);
-        pthread_mutex_unlock(&p->lock);
-    }
+    pthread_mutex_lock(&p->lock);
+    p->run = run, p->args = args, p->size = size, p->n = n, p->taken = 0;
+    atomic_fetch_add(&p->round, 1);
+    pthread_cond_broadcast(&p->go);
+    take_shares(p); /* share 0 first, then any no thread has taken */
+    pthread_mutex_unlock(&p->lock);
+    for (int i = 0; i < p->spins && atomic_load(&p->busy) > 0; i++)
+        pause_a_moment(); /* the others are near done */
+    p->spins = next_spin(p->spins, atomic_load(&p->busy) == 0);
+    pthread_mutex_lock(&p->lock);
+    while (atomic_load(&p->busy) > 0)
+        pthread_cond_wait(&p->done, &p->lock);
+    pthread_mutex_unlock(&p->lock);
 }
 
 void pool_free(Pool *p)
