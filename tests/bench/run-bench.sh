@@ -18,13 +18,18 @@
 # than the one alone (cores that share one, or a host running other work),
 # no program's N threads can be N times as fast as its one here: that
 # ceiling, how many times the frames of one alone the copies drew, is
-# printed after the targets.
+# printed after the targets: of the round where it was highest, the copies
+# of one round taken together (each copy's best round would add up to more
+# than the cores gave at any one time).
 # CC and BENCH_CFLAGS, when set, are shown with the machine, and so are the
 # instructions lesson 10 and llvmpipe may use. BENCH_AS measures both as on
 # a lesser x86-64: avx2, one with AVX2 but not AVX-512 (lesson 10's AVX2
 # kernel, llvmpipe without AVX-512); sse, one without AVX (its SSE2 kernel,
 # llvmpipe with SSE4.1 at most): FAST_RASTER_SIMD and Mesa's
 # GALLIUM_OVERRIDE_CPU_CAPS, which can also be set by hand.
+# BENCH_BUSY=1 runs a loop beside them from the first program to the last,
+# as other work on a shared machine (docs/performance.md, "A busy machine");
+# the cores side by side then show what is left for threads.
 # Every binary runs BENCH_ROUNDS times (3 unless set), the rounds one after
 # the other, and each row is its round with the least median: on a shared
 # machine a burst of other work slows one round of one binary, not a ratio.
@@ -58,6 +63,18 @@ simd=${FAST_RASTER_SIMD:+FAST_RASTER_SIMD=$FAST_RASTER_SIMD}
 caps=${GALLIUM_OVERRIDE_CPU_CAPS:+GALLIUM_OVERRIDE_CPU_CAPS=$GALLIUM_OVERRIDE_CPU_CAPS}
 echo "instructions: lesson 10's kernels ${simd:-the widest the CPU has}; llvmpipe ${caps:-all the CPU has}"
 
+case ${BENCH_BUSY:-0} in
+    0) ;;
+    1) # the loop: killed on the way out, and done when this script is gone
+       sh -c 'while kill -0 "$1" 2>/dev/null; do :; done' run-bench-busy $$ &
+       busy=$!
+       trap 'kill "$busy" 2>/dev/null; wait "$busy" 2>/dev/null || :' EXIT
+       trap 'exit 130' INT
+       trap 'exit 143' TERM
+       echo "busy: a loop runs beside every program (BENCH_BUSY=1), as other work on a shared machine" ;;
+    *) echo "run-bench.sh: BENCH_BUSY: '$BENCH_BUSY' is not 0 or 1" >&2; exit 2 ;;
+esac
+
 rounds=${BENCH_ROUNDS:-3}
 case $rounds in
     [1-9]) ;;
@@ -65,11 +82,11 @@ case $rounds in
 esac
 all="$out_dir/rounds.csv"
 : >"$all"
-# side_by_side BINARY: rows cores_alone and cores_copy_1 .. cores_copy_N into $all.
+# side_by_side BINARY: rows cores_alone_R and cores_copy_R_1 .. cores_copy_R_N into $all (round R).
 side_by_side() {
     echo "running $(basename "$1") on fill_back_to_front, alone then $cpus at once ..." >&2
     BENCH_CONFIG=0 BENCH_WALL_CLOCK=1 "$1" fill_back_to_front >"$out_dir/copy.0"
-    sed 's/^[^,]*,/cores_alone,/' "$out_dir/copy.0" >>"$all"
+    sed "s/^[^,]*,/cores_alone_$round,/" "$out_dir/copy.0" >>"$all"
     rm -f "$out_dir/copy.0"
     pids=
     for k in $(seq "$cpus"); do
@@ -81,7 +98,7 @@ side_by_side() {
         wait "$pid" || failed=1
     done
     for k in $(seq "$cpus"); do
-        sed "s/^[^,]*,/cores_copy_$k,/" "$out_dir/copy.$k" >>"$all"
+        sed "s/^[^,]*,/cores_copy_${round}_$k,/" "$out_dir/copy.$k" >>"$all"
         rm -f "$out_dir/copy.$k"
     done
     [ "$failed" = 0 ] || { echo "run-bench.sh: a copy of $(basename "$1") failed" >&2; exit 1; }
@@ -136,12 +153,15 @@ NR == 1 {
     lesson = $1; workload = $2; tris = $6 + 0; frags = $7 + 0; med = $8; lo = $9; hi = $10
     if (med <= 0)
         med = 1e-9 # below the resolution of the clock: no division by zero
-    if (lesson == "cores_alone") { # the cores side by side: not rows of the table
-        alone = med
+    if (lesson ~ /^cores_alone_[0-9]+$/) { # the cores side by side: not rows of the table
+        split(lesson, f, "_")
+        alone[f[3]] = med
         next
     }
-    if (lesson ~ /^cores_copy_[0-9]+$/) {
-        copy[++copies] = med
+    if (lesson ~ /^cores_copy_[0-9]+_[0-9]+$/) { # round f[3], copy f[4]
+        split(lesson, f, "_")
+        copy[f[3], f[4]] = med
+        copies = (f[4] + 0 > copies) ? f[4] + 0 : copies
         next
     }
     mfrag = frags / med / 1e6
@@ -227,16 +247,26 @@ END {
             med09[w] = row_med[r]
     }
     # The cores side by side: N copies at once did N frames in the time of
-    # sum(alone / copy k) frames alone; N threads can share no better.
-    if (alone > 0 && copies > 1) {
+    # sum(alone / copy k) frames alone; N threads can share no better. The
+    # round where they did the most, its copies together.
+    best = -1
+    for (r in alone) {
+        if (copies < 2)
+            break
         ceiling = 0; slowest = 0
         for (k = 1; k <= copies; k++) {
-            ceiling += alone / copy[k]
-            slowest = copy[k] > slowest ? copy[k] : slowest
+            ceiling += alone[r] / copy[r, k]
+            slowest = copy[r, k] > slowest ? copy[r, k] : slowest
         }
-        printf("  the cores side by side: %d copies of 10_fast_raster_1t on fill_back_to_front at once\n", copies)
+        if (ceiling > best) {
+            best = ceiling; best_slowest = slowest; best_alone = alone[r]
+        }
+    }
+    if (best > 0) {
+        printf("  the cores side by side, their best round: %d copies of 10_fast_raster_1t on fill_back_to_front at once\n",
+               copies)
         printf("    drew %.2f times the frames of one alone (%.2f ms a frame at the slowest, %.2f alone):\n",
-               ceiling, slowest * 1e3, alone * 1e3)
+               best, best_slowest * 1e3, best_alone * 1e3)
         printf("    about the most %d threads can gain over one on this machine\n", copies)
     }
     # Lesson 09 against lesson 08 (docs/09_hierarchical_z.md): the time of 08 over that of 09.
