@@ -10,8 +10,10 @@
  * faces are held the next finish comes a fraction of a millisecond later
  * (held.c); the calling thread, its shares done, spins too before it sleeps
  * till the others are done. A spin that ended in sleep halves the next, one
- * that found its work doubles it (SPINS at most): on a busy machine, where a
+ * that found its work doubles it (SPIN_NS at most): on a busy machine, where a
  * thread spinning keeps a core from the thread with work, the spins die out.
+ * A spin is timed by the clock, not counted in pauses: a pause takes from
+ * about 10 cycles to 140 from one x86-64 to another.
  * With no thread (the browser's build has none), the calling thread runs
  * every share. */
 #include "engine.h"
@@ -19,14 +21,15 @@
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdlib.h>
+#include <time.h>
 #if defined(__x86_64__)
 #include <emmintrin.h> /* _mm_pause */
 #endif
 
-#define SPINS 16000    /* looks for work before a thread sleeps: 0.4 ms on a Zen 5, at most */
-#define POOL_MAX 255   /* threads besides the calling one (--threads: 1 to 256) */
+#define SPIN_NS 400000  /* looks for work before a thread sleeps: 0.4 ms at most */
+#define POOL_MAX 255    /* threads besides the calling one (--threads: 1 to 256) */
 
-typedef struct { Pool *pool; unsigned seen; int spins; pthread_t id; } Worker;
+typedef struct { Pool *pool; unsigned seen; int64_t spin; pthread_t id; } Worker; /* spin: ns */
 
 struct Pool {
     pthread_mutex_t lock;
@@ -35,21 +38,33 @@ struct Pool {
     atomic_int busy;         /* shares taken and not yet done */
     bool quit, refused;      /* refused: a thread could not start (none is tried again) */
     void *(*run)(void *); char *args; size_t size; int n; /* the round's work */
-    int taken, spins;        /* shares taken (under the lock); the calling thread's spin */
+    int taken; int64_t spin; /* shares taken (under the lock); the calling thread's spin */
     int workers; Worker worker[POOL_MAX]; /* started: threads 1 .. workers */
 };
 
-static void pause_a_moment(void)
+static int64_t now_ns(void)
 {
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (int64_t)t.tv_sec * 1000000000 + t.tv_nsec;
+}
+
+/* One more look of a spin begun at start, to last ns: false once they are
+ * past (the clock read at every 64th look), else a pause first. */
+static bool spinning(int64_t start, int64_t ns, int *looks)
+{
+    if ((*looks)++ % 64 == 0 && now_ns() - start >= ns)
+        return false;
 #if defined(__x86_64__)
     _mm_pause();
 #endif
+    return true;
 }
 
 /* The next spin, after one that found what it waited for (ended) or not. */
-static int next_spin(int spins, bool ended)
+static int64_t next_spin(int64_t ns, bool ended)
 {
-    return ended ? (spins * 2 + 16 < SPINS ? spins * 2 + 16 : SPINS) : spins / 2;
+    return ended ? (ns * 2 + 400 < SPIN_NS ? ns * 2 + 400 : SPIN_NS) : ns / 2;
 }
 
 /* The round's shares not yet taken, one after another, here; p->lock held. */
@@ -73,9 +88,10 @@ static void *work(void *arg)
     Worker *w = arg;
     Pool *p = w->pool;
     for (;;) {
-        for (int i = 0; i < w->spins && atomic_load(&p->round) == w->seen; i++)
-            pause_a_moment();
-        w->spins = next_spin(w->spins, atomic_load(&p->round) != w->seen);
+        int64_t start = now_ns();
+        for (int looks = 0; atomic_load(&p->round) == w->seen && spinning(start, w->spin, &looks);)
+            continue;
+        w->spin = next_spin(w->spin, atomic_load(&p->round) != w->seen);
         pthread_mutex_lock(&p->lock);
         while (atomic_load(&p->round) == w->seen && !p->quit)
             pthread_cond_wait(&p->go, &p->lock);
@@ -97,7 +113,7 @@ static Pool *pool_new(void) /* no thread yet; NULL: out of memory */
     pthread_mutex_init(&p->lock, NULL);
     pthread_cond_init(&p->go, NULL), pthread_cond_init(&p->done, NULL);
     atomic_init(&p->round, 0), atomic_init(&p->busy, 0);
-    p->spins = SPINS;
+    p->spin = SPIN_NS;
     return p;
 }
 
@@ -108,7 +124,7 @@ void run_threads(Pool **pool, int n, void *(*run)(void *), void *args, size_t si
     Pool *p = *pool;
     while (p && p->workers < n - 1 && p->workers < POOL_MAX && !p->refused) {
         Worker *w = &p->worker[p->workers]; /* waits for the next round, not the last */
-        *w = (Worker){.pool = p, .seen = atomic_load(&p->round), .spins = SPINS};
+        *w = (Worker){.pool = p, .seen = atomic_load(&p->round), .spin = SPIN_NS};
         p->refused = pthread_create(&w->id, NULL, work, w) != 0;
         p->workers += !p->refused;
     }
@@ -123,9 +139,10 @@ void run_threads(Pool **pool, int n, void *(*run)(void *), void *args, size_t si
     pthread_cond_broadcast(&p->go);
     take_shares(p); /* share 0 first, then any no thread has taken */
     pthread_mutex_unlock(&p->lock);
-    for (int i = 0; i < p->spins && atomic_load(&p->busy) > 0; i++)
-        pause_a_moment(); /* the others are near done */
-    p->spins = next_spin(p->spins, atomic_load(&p->busy) == 0);
+    int64_t start = now_ns(); /* the others are near done */
+    for (int looks = 0; atomic_load(&p->busy) > 0 && spinning(start, p->spin, &looks);)
+        continue;
+    p->spin = next_spin(p->spin, atomic_load(&p->busy) == 0);
     pthread_mutex_lock(&p->lock);
     while (atomic_load(&p->busy) > 0)
         pthread_cond_wait(&p->done, &p->lock);
