@@ -21,6 +21,9 @@
 # printed after the targets: of the round where it was highest, the copies
 # of one round taken together (each copy's best round would add up to more
 # than the cores gave at any one time).
+# The machine line names the CPU, how many there are and, as lscpu says, how
+# many threads each core runs (two threads of one core share it: there a
+# program's two threads gain far less than twice one's).
 # CC and BENCH_CFLAGS, when set, are shown with the machine, and so are the
 # instructions lesson 10 and llvmpipe may use. BENCH_AS measures both as on
 # a lesser x86-64: avx2, one with AVX2 but not AVX-512 (lesson 10's AVX2
@@ -47,8 +50,14 @@ raw="$out_dir/raw.csv"
 model=$(lscpu 2>/dev/null | sed -n 's/^Model name: *//p' | head -n 1)
 [ -n "$model" ] || model=$(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo 2>/dev/null | head -n 1)
 cpus=$(nproc 2>/dev/null || echo "?")
+smt=$(lscpu 2>/dev/null | sed -n 's/^Thread(s) per core: *\([0-9]*\)$/\1/p' | head -n 1)
+case $smt in
+    '') ;;
+    1) smt=" (1 thread per core)" ;;
+    *) smt=" ($smt threads per core)" ;;
+esac
 compiler=$(${CC:-cc} --version 2>/dev/null | head -n 1)
-echo "machine: ${model:-unknown CPU}, $cpus CPUs; compiler: ${compiler:-unknown}; flags: ${BENCH_CFLAGS:-?}"
+echo "machine: ${model:-unknown CPU}, $cpus CPUs$smt; compiler: ${compiler:-unknown}; flags: ${BENCH_CFLAGS:-?}"
 case ${BENCH_AS:-} in
     '') ;;
     avx2) FAST_RASTER_SIMD=avx2 GALLIUM_OVERRIDE_CPU_CAPS=avx # Mesa's avx: all but AVX-512

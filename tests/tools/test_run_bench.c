@@ -12,7 +12,8 @@
  * copies taken together. BENCH_AS=avx2 or sse hands
  * each program the instructions of a lesser x86-64 (FAST_RASTER_SIMD for
  * lesson 10, GALLIUM_OVERRIDE_CPU_CAPS for llvmpipe), and says so.
- * BENCH_BUSY=1 runs a loop beside every program, and none is left after. */
+ * BENCH_BUSY=1 runs a loop beside every program, and none is left after.
+ * The machine line says how many threads each core runs (lscpu). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -118,7 +119,7 @@ static void the_cores_side_by_side_give_the_ceiling_for_threads(void **state)
     ShellResult r = run_bench(dir, "2", limit, lesson);
     if (r.status != 0)
         fail_msg("run-bench.sh: status %d\n%s", r.status, r.output);
-    const char *at = strstr(r.output, " CPUs; compiler"), *digits = at; /* "machine: ..., N CPUs" */
+    const char *at = strstr(r.output, " CPUs"), *digits = at; /* "machine: ..., N CPUs" */
     while (digits && digits > r.output && digits[-1] >= '0' && digits[-1] <= '9')
         digits--;
     int cpus = 0;
@@ -137,6 +138,33 @@ static void the_cores_side_by_side_give_the_ceiling_for_threads(void **state)
         fail_msg("results.csv has the cores' rows:\n%s", csv);
     free(csv);
     shell_result_free(&r);
+}
+
+/* The machine line names the CPU and how many threads each core runs, as
+ * lscpu says (here a stand-in first on PATH); without that line, nothing. */
+static void the_machine_line_says_how_many_threads_a_core_runs(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("run_bench_machine");
+    const char *limit = stand_in(dir, "limit", "0.001", false);
+    const char *lesson = stand_in(dir, "lesson", "0.010", false);
+    const char *says[] = {"Thread(s) per core:   2", "Thread(s) per core:   1", ""};
+    const char *want[] = {" CPUs (2 threads per core); compiler", " CPUs (1 thread per core); compiler",
+                          " CPUs; compiler"};
+    for (size_t k = 0; k < sizeof says / sizeof says[0]; k++) {
+        char text[256];
+        snprintf(text, sizeof text, "#!/bin/sh\nprintf 'Model name:            Test CPU 9000\\n%s\\n'\n",
+                 says[k]);
+        write_program_in(dir, "lscpu", text);
+        ShellResult r = run_shell(NULL, TIMEOUT, "PATH=%s:$PATH BENCH_ROUNDS=1 sh tests/bench/run-bench.sh "
+                                  "%s/out %s %s", dir, dir, limit, lesson);
+        if (r.status != 0)
+            fail_msg("run-bench.sh: status %d\n%s", r.status, r.output);
+        if (!strstr(r.output, "machine: Test CPU 9000, ") || !strstr(r.output, want[k]))
+            fail_msg("lscpu says '%s', and the machine line has not 'Test CPU 9000' and '%s':\n%s",
+                     says[k], want[k], r.output);
+        shell_result_free(&r);
+    }
 }
 
 static void rounds_out_of_range_are_refused(void **state)
@@ -257,6 +285,7 @@ int main(void)
         cmocka_unit_test(rounds_that_leave_other_depth_buffers_fail_the_run),
         cmocka_unit_test(rounds_out_of_range_are_refused),
         cmocka_unit_test(the_cores_side_by_side_give_the_ceiling_for_threads),
+        cmocka_unit_test(the_machine_line_says_how_many_threads_a_core_runs),
         cmocka_unit_test(bench_as_hands_both_the_instructions_of_a_lesser_x86_64),
         cmocka_unit_test(bench_busy_runs_a_loop_beside_every_program),
     };
