@@ -78,7 +78,7 @@ struct Bins {
     EdgeFn *edge; size_t nedge, cap_edge;
     Bin *bin; /* one per tile, row by row */
     bool *cleared; /* per tile: cleared since, its pixels not (NULL: cleared at once) */
-    float clear;   /* the cleared depth value */
+    float clear; bool ahead; /* the cleared depth value; lines owned ahead (engine.c) */
 };
 
 typedef struct { /* simd.c's AVX2; extras/: plain C, SSE2, AVX-512: the same bits */
