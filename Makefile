@@ -455,6 +455,9 @@ BENCH_BINS    += $(if $(wildcard lessons/08_early_z/main.c),$(BENCH_DIR)/bench_e
 # Mesa's llvmpipe on the same workloads, one thread and all cores
 # (tests/gpu/bench_llvmpipe.c), wherever the GPU reference is built.
 BENCH_BINS    += $(if $(GPU_REF),$(BENCH_DIR)/bench_llvmpipe)
+# How far apart the cores are for threads that pass data: a cache line's round
+# trip between two threads (tests/bench/round_trip.c), each round.
+BENCH_BINS    += $(BENCH_DIR)/bench_round_trip
 
 .PHONY: bench
 bench: $(BENCH_BINS)
@@ -496,6 +499,9 @@ $(BENCH_DIR)/bench_early_z: $(BENCH_DIR)/obj/tests/bench/early_z.o $(call bench_
 	$(CC) $(BENCH_LINK) $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 
 $(BENCH_DIR)/bench_limit: $(BENCH_DIR)/obj/tests/bench/limit.o $(BENCH_SUPPORT)
+	$(CC) $(BENCH_LINK) $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
+
+$(BENCH_DIR)/bench_round_trip: $(BENCH_DIR)/obj/tests/bench/round_trip.o $(BENCH_SUPPORT)
 	$(CC) $(BENCH_LINK) $(LDFLAGS) $^ -o $@ $(STB_LIBS) $(LDLIBS) $(REQUIRED_LDLIBS)
 
 $(BENCH_DIR)/bench_%: $(BENCH_DIR)/obj/bench_%.o $$(call bench_lesson_objs,$$*) $(BENCH_SUPPORT)

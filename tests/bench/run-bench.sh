@@ -30,6 +30,10 @@
 # kernel, llvmpipe without AVX-512); sse, one without AVX (its SSE2 kernel,
 # llvmpipe with SSE4.1 at most): FAST_RASTER_SIMD and Mesa's
 # GALLIUM_OVERRIDE_CPU_CAPS, which can also be set by hand.
+# bench_round_trip, among them and with more than one core, gives each
+# round's round trip of a cache line between two threads: threads that pass
+# data, as lesson 10's, gain less the longer it is (docs/performance.md,
+# "Two cores far apart"); printed with the targets, not a row of the table.
 # BENCH_BUSY=1 runs a loop beside them from the first program to the last,
 # as other work on a shared machine (docs/performance.md, "A busy machine");
 # the cores side by side then show what is left for threads.
@@ -114,6 +118,10 @@ side_by_side() {
 }
 for round in $(seq "$rounds"); do
     for bin in "$@"; do
+        case $(basename "$bin"):$cpus in
+            bench_round_trip:1 | bench_round_trip:\?) continue ;; # one core: no round trip
+            bench_round_trip:*) "$bin" | sed "s/^round_trip,/round_trip_$round,/" >>"$all"; continue ;;
+        esac
         echo "running $(basename "$bin"), round $round of $rounds ..." >&2
         "$bin" >>"$all"
         case $(basename "$bin"):$cpus in
@@ -165,6 +173,12 @@ NR == 1 {
     if (lesson ~ /^cores_alone_[0-9]+$/) { # the cores side by side: not rows of the table
         split(lesson, f, "_")
         alone[f[3]] = med
+        next
+    }
+    if (lesson ~ /^round_trip_[0-9]+$/) { # the round trip of round f[3]
+        split(lesson, f, "_")
+        trip[f[3] + 0] = med
+        trips = (f[3] + 0 > trips) ? f[3] + 0 : trips
         next
     }
     if (lesson ~ /^cores_copy_[0-9]+_[0-9]+$/) { # round f[3], copy f[4]
@@ -277,6 +291,14 @@ END {
         printf("    drew %.2f times the frames of one alone (%.2f ms a frame at the slowest, %.2f alone):\n",
                best, best_slowest * 1e3, best_alone * 1e3)
         printf("    about the most %d threads can gain over one on this machine\n", copies)
+    }
+    # A cache line between two threads and back, each round (bench_round_trip).
+    if (trips > 0) {
+        line = ""
+        for (r = 1; r <= trips; r++)
+            line = line ((r in trip) ? sprintf("%s%.0f", (line != "") ? ", " : "", trip[r] * 1e9) : "")
+        printf("  the round trip of a cache line from one thread to the other and back: %s ns\n", line)
+        printf("    (a round each; threads that pass data, as those of lesson 10, gain less the longer it is)\n")
     }
     # Lesson 09 against lesson 08 (docs/09_hierarchical_z.md): the time of 08 over that of 09.
     if (("city" in med08) && ("city" in med09))

@@ -13,7 +13,8 @@
  * each program the instructions of a lesser x86-64 (FAST_RASTER_SIMD for
  * lesson 10, GALLIUM_OVERRIDE_CPU_CAPS for llvmpipe), and says so.
  * BENCH_BUSY=1 runs a loop beside every program, and none is left after.
- * The machine line says how many threads each core runs (lscpu). */
+ * The machine line says how many threads each core runs (lscpu); each
+ * round's round trip between two threads is printed, not a row. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -136,6 +137,42 @@ static void the_cores_side_by_side_give_the_ceiling_for_threads(void **state)
     char *csv = read_text(path_join(dir, "out/results.csv"));
     if (strstr(csv, "cores_"))
         fail_msg("results.csv has the cores' rows:\n%s", csv);
+    free(csv);
+    shell_result_free(&r);
+}
+
+/* bench_round_trip's stand-in: 100 ns its first run, 400 its second, 95 after. */
+static void each_round_gives_its_round_trip(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("run_bench_round_trip");
+    const char *limit = stand_in(dir, "limit", "0.001", false);
+    const char *trip = write_program_in(
+        dir, "bench_round_trip",
+        "#!/bin/sh\n"
+        "n=$(cat \"$0.n\" 2>/dev/null || echo 0); n=$((n + 1)); echo $n >\"$0.n\"\n"
+        "set -- 0.000000100 0.000000400 0.000000095; shift $((n <= 3 ? n - 1 : 2))\n"
+        "echo \"round_trip,cores,0,0,11,0,0,$1,$1,$1,0\"\n");
+    ShellResult r = run_bench(dir, NULL, limit, trip);
+    if (r.status != 0)
+        fail_msg("run-bench.sh: status %d\n%s", r.status, r.output);
+    const char *at = strstr(r.output, " CPUs"), *digits = at; /* "machine: ..., N CPUs" */
+    while (digits && digits > r.output && digits[-1] >= '0' && digits[-1] <= '9')
+        digits--;
+    int cpus = 0;
+    if (!at || digits == at || sscanf(digits, "%d", &cpus) != 1)
+        fail_msg("no CPU count on the machine line:\n%s", r.output);
+    const char *want = "the round trip of a cache line from one thread to the other and back: "
+                       "100, 400, 95 ns";
+    if (cpus > 1 && !strstr(r.output, want))
+        fail_msg("not '%s':\n%s", want, r.output);
+    if (cpus == 1 && strstr(r.output, "round trip"))
+        fail_msg("one core, yet a round trip:\n%s", r.output);
+    if (strstr(r.output, "\nround_trip"))
+        fail_msg("the round trip is a row of the table:\n%s", r.output);
+    char *csv = read_text(path_join(dir, "out/results.csv"));
+    if (strstr(csv, "round_trip"))
+        fail_msg("results.csv has the round trip's rows:\n%s", csv);
     free(csv);
     shell_result_free(&r);
 }
@@ -286,6 +323,7 @@ int main(void)
         cmocka_unit_test(rounds_out_of_range_are_refused),
         cmocka_unit_test(the_cores_side_by_side_give_the_ceiling_for_threads),
         cmocka_unit_test(the_machine_line_says_how_many_threads_a_core_runs),
+        cmocka_unit_test(each_round_gives_its_round_trip),
         cmocka_unit_test(bench_as_hands_both_the_instructions_of_a_lesser_x86_64),
         cmocka_unit_test(bench_busy_runs_a_loop_beside_every_program),
     };
