@@ -26,8 +26,6 @@
  * "fill_back_to_front", "fill_counted", "small" and "small_counted". */
 #include <math.h>
 #include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
 #include "measure.h"
 #include "target.h"
@@ -140,20 +138,10 @@ static bool measure(DrawFn draw, bool counting, const Workload *w, const char *w
 int main(int argc, char **argv)
 {
     const char *program = argc > 0 ? argv[0] : "bench_limit";
-    int reps = BENCH_REPS;
-    if (argc == 3 && strcmp(argv[1], "--reps") == 0) {
-        char *end;
-        long n = strtol(argv[2], &end, 10);
-        if (*end != '\0' || n < 1 || n > MAX_REPS) {
-            fprintf(stderr, "%s: error: --reps needs a number from 1 to %d\n", program, MAX_REPS);
-            return 2;
-        }
-        reps = (int)n;
-    } else if (argc != 1) {
-        fprintf(stderr, "%s: error: unexpected '%s' (usage: %s [--reps N])\n", program, argv[1],
-                program);
-        return 2;
-    }
+    int reps;
+    int usage = bench_parse_reps(argc, argv, program, &reps);
+    if (usage != 0)
+        return usage;
 
     Workload small;
     Measurement m[4];

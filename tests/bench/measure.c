@@ -92,3 +92,22 @@ int bench_parse_args(int argc, char **argv, const char *program, int *reps,
     }
     return 0;
 }
+
+int bench_parse_reps(int argc, char **argv, const char *program, int *reps)
+{
+    *reps = BENCH_REPS;
+    if (argc == 3 && strcmp(argv[1], "--reps") == 0) {
+        char *end;
+        long n = strtol(argv[2], &end, 10);
+        if (*end != '\0' || n < 1 || n > MAX_REPS) {
+            fprintf(stderr, "%s: error: --reps needs a number from 1 to %d\n", program, MAX_REPS);
+            return 2;
+        }
+        *reps = (int)n;
+    } else if (argc != 1) {
+        fprintf(stderr, "%s: error: unexpected '%s' (usage: %s [--reps N])\n", program, argv[1],
+                program);
+        return 2;
+    }
+    return 0;
+}

@@ -62,5 +62,8 @@ void measure_print(FILE *out, const Measurement *m);
  * false). Returns 0, or 2 after one error line on stderr. */
 int bench_parse_args(int argc, char **argv, const char *program, int *reps,
                      bool chosen[WORKLOAD_COUNT], bool *any);
+/* A command line of [--reps N] alone (bench_limit, bench_round_trip): the same,
+ * without workloads. */
+int bench_parse_reps(int argc, char **argv, const char *program, int *reps);
 
 #endif

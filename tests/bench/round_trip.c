@@ -14,8 +14,6 @@
 #include <sched.h>
 #include <stdatomic.h>
 #include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
 #include "measure.h"
 
@@ -66,20 +64,10 @@ static double bounce(Ball *b, long *count)
 int main(int argc, char **argv)
 {
     const char *program = argc > 0 ? argv[0] : "bench_round_trip";
-    int reps = BENCH_REPS;
-    if (argc == 3 && strcmp(argv[1], "--reps") == 0) {
-        char *end;
-        long n = strtol(argv[2], &end, 10);
-        if (*end != '\0' || n < 1 || n > MAX_REPS) {
-            fprintf(stderr, "%s: error: --reps needs a number from 1 to %d\n", program, MAX_REPS);
-            return 2;
-        }
-        reps = (int)n;
-    } else if (argc != 1) {
-        fprintf(stderr, "%s: error: unexpected '%s' (usage: %s [--reps N])\n", program, argv[1],
-                program);
-        return 2;
-    }
+    int reps;
+    int usage = bench_parse_reps(argc, argv, program, &reps);
+    if (usage != 0)
+        return usage;
     static Ball ball;
     atomic_init(&ball.count, 0), atomic_init(&ball.stop, false);
     pthread_t other;

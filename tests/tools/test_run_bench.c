@@ -46,6 +46,18 @@ static const char *stand_in(const char *dir, const char *name, const char *media
     return write_program_in(dir, name, text);
 }
 
+/* N of the machine line's "machine: ..., N CPUs"; fails without. */
+static int machine_cpus(const char *output)
+{
+    const char *at = strstr(output, " CPUs"), *digits = at;
+    while (digits && digits > output && digits[-1] >= '0' && digits[-1] <= '9')
+        digits--;
+    int cpus = 0;
+    if (!at || digits == at || sscanf(digits, "%d", &cpus) != 1)
+        fail_msg("no CPU count on the machine line:\n%s", output);
+    return cpus;
+}
+
 /* run-bench.sh OUT LIMIT LESSON, with BENCH_ROUNDS=rounds (NULL: unset). */
 static ShellResult run_bench(const char *dir, const char *rounds, const char *limit,
                              const char *lesson)
@@ -120,12 +132,7 @@ static void the_cores_side_by_side_give_the_ceiling_for_threads(void **state)
     ShellResult r = run_bench(dir, "2", limit, lesson);
     if (r.status != 0)
         fail_msg("run-bench.sh: status %d\n%s", r.status, r.output);
-    const char *at = strstr(r.output, " CPUs"), *digits = at; /* "machine: ..., N CPUs" */
-    while (digits && digits > r.output && digits[-1] >= '0' && digits[-1] <= '9')
-        digits--;
-    int cpus = 0;
-    if (!at || digits == at || sscanf(digits, "%d", &cpus) != 1)
-        fail_msg("no CPU count on the machine line:\n%s", r.output);
+    int cpus = machine_cpus(r.output);
     char want[160];
     snprintf(want, sizeof want, "%d copies of 10_fast_raster_1t on fill_back_to_front at once\n"
              "    drew %.2f times the frames of one alone (20.00 ms a frame at the slowest, 40.00 alone)",
@@ -156,12 +163,7 @@ static void each_round_gives_its_round_trip(void **state)
     ShellResult r = run_bench(dir, NULL, limit, trip);
     if (r.status != 0)
         fail_msg("run-bench.sh: status %d\n%s", r.status, r.output);
-    const char *at = strstr(r.output, " CPUs"), *digits = at; /* "machine: ..., N CPUs" */
-    while (digits && digits > r.output && digits[-1] >= '0' && digits[-1] <= '9')
-        digits--;
-    int cpus = 0;
-    if (!at || digits == at || sscanf(digits, "%d", &cpus) != 1)
-        fail_msg("no CPU count on the machine line:\n%s", r.output);
+    int cpus = machine_cpus(r.output);
     const char *want = "the round trip of a cache line from one thread to the other and back: "
                        "100, 400, 95 ns";
     if (cpus > 1 && !strstr(r.output, want))
