@@ -103,8 +103,8 @@ bool bins_room(Bins *b, const Poly *p, int n)
      * its edges (3 a triangle) are asked for before they are stored to: the
      * other thread read them at the last finish (its tiles), and each comes
      * back from its core. On two cores far apart a round trip took 0.4 us,
-     * and the stores waiting on them held mesh's set-up up by half
-     * (docs/performance.md, "Two cores far apart"). */
+     * and with the stores waiting on them mesh took 18 ms on two threads,
+     * now 13 (docs/performance.md, "Two cores far apart"). */
     if (b->ahead && b->npoly + AHEAD < b->cap_poly && b->nedge + 3 * AHEAD < b->cap_edge)
         own_line(&b->poly[b->npoly + AHEAD]), own_line(&b->edge[b->nedge + 3 * AHEAD]);
     for (int ty = tile_of(p->y0); room && ty <= tile_of(p->y1 - 1); ty++)
