@@ -112,8 +112,8 @@ DepthPlane depth_plane(const DepthSetup *s, const ScreenVertex v[3])
     float area = dx01 * dy20 - dx20 * dy01;
     if (area == 0)
         return p; /* no pixel centre inside */
-    /* SOLUTION BEGIN: the slopes from dz01 = gx dx01 + gy dy01 and
-     * dz20 = gx dx20 + gy dy20, then the plane's value at (0.5, 0.5). */
+    /* SOLUTION BEGIN: the slopes from dz01 = gx dx01 + gy dy01 and dz20 = gx dx20 + gy dy20,
+     * then the value at (0.5, 0.5), in the page's order (exercise 1): tests compare bits. */
     float inv_area = 1.0f / area;
     p.gx = dz01 * (dy20 * inv_area) - dz20 * (dy01 * inv_area);
     p.gy = dz20 * (dx01 * inv_area) - dz01 * (dx20 * inv_area);

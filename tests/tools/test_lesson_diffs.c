@@ -20,7 +20,7 @@
  * The diff is counted here from the output of tools/lesson-diff.sh, file by
  * file, and must agree with what `make reading` prints. Each lesson page names
  * its reading path, in order, under "## Reading the code"; the diffs a page
- * links (docs/diffs/) are today's. */
+ * links (docs/diffs/) are today's, and the page names each file they change. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -296,6 +296,53 @@ static void linked_diffs_in_docs_are_the_diffs_of_the_code(void **state)
     }
 }
 
+/* Each page says what its `make diff` shows, in the paragraph that names the
+ * command: every file the diff changes is named there, as `clip.c`, or with
+ * its kind as `scanline.*`. A file left out is one a reader meets unwarned. */
+static void every_page_names_each_file_its_diff_changes(void **state)
+{
+    (void)state;
+    Reading r[MAX_LESSONS];
+    int n = read_readings(r);
+    for (int k = 0; k + 1 < n; k++) {
+        char from[3], to[3], path[64], page[96], command[64];
+        snprintf(from, sizeof from, "%.2s", r[k].name);
+        snprintf(to, sizeof to, "%.2s", r[k + 1].name);
+        if (strcmp(from, "01") == 0)
+            continue; /* lesson 02 starts the 3-D series: no diff */
+        snprintf(path, sizeof path, "docs/diffs/%s_to_%s.diff", from, to);
+        snprintf(page, sizeof page, "docs/%.64s.md", r[k + 1].name);
+        snprintf(command, sizeof command, "make diff FROM=%s TO=%s", from, to);
+        char *diff = read_text(path), *text = read_text(page);
+        char *said = strstr(text, command);
+        if (!said)
+            fail_msg("%s does not say what `%s` shows", page, command);
+        char *end = strstr(said, "\n\n");
+        if (end)
+            *end = '\0';
+        int files = 0;
+        for (char *line = diff; line && *line; line = strchr(line, '\n') ? strchr(line, '\n') + 1 : NULL) {
+            if (strncmp(line, "diff -ruN ", 10) != 0)
+                continue;
+            char *eol = strchr(line, '\n'), name[128], kind[132];
+            size_t len = eol ? (size_t)(eol - line) : strlen(line);
+            char *slash = line + len;
+            while (slash > line && slash[-1] != '/')
+                slash--;
+            snprintf(name, sizeof name, "%.*s", (int)(line + len - slash), slash);
+            char *dot = strrchr(name, '.');
+            snprintf(kind, sizeof kind, "%.*s.*", (int)(dot ? dot - name : (long)strlen(name)), name);
+            if (!strstr(said, name) && !strstr(said, kind))
+                fail_msg("%s: the paragraph on `%s` does not name %s, which the diff changes "
+                         "(%s)", page, command, name, path);
+            files++;
+        }
+        expect_at_least(1, files, what("files %s changes", path));
+        free(diff);
+        free(text);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -303,6 +350,7 @@ int main(void)
         cmocka_unit_test(every_lesson_diff_is_its_idea),
         cmocka_unit_test(every_page_names_its_reading_path_in_order),
         cmocka_unit_test(linked_diffs_in_docs_are_the_diffs_of_the_code),
+        cmocka_unit_test(every_page_names_each_file_its_diff_changes),
     };
     return cmocka_run_group_tests_name("tools: reading paths and lesson diffs", tests, NULL,
                                        NULL);
