@@ -304,10 +304,25 @@ for lesson in "$@"; do
             }
         }' "$ldir/points" "$ldir/where" "$ldir/bins" >"$ldir/jobs"
     mkdir -p "$ldir/run"
+    # Judged: the submission's taught files may hold nothing that would turn
+    # its test programs against their record (tools/submission-check.sh); if
+    # one does, no test of the lesson runs, and each says why.
+    refused=""
+    if [ "$mode" = reference ] &&
+        ! sh tools/submission-check.sh check "$build" "$lesson" "$records/$lesson/check" >"$ldir/refused" 2>&1; then
+        refused=1
+        echo "$prog: $lesson is not judged:" >&2
+        sed 's/^/  /' "$ldir/refused" >&2
+        while read -r bin name; do
+            { echo "not judged: the submission holds what a solution has no need of:"; cat "$ldir/refused"; } \
+                >"$ldir/run/$bin.$name.log"
+            echo "fail 0 $limit $((3 * limit))" >"$ldir/run/$bin.$name.verdict"
+        done <"$ldir/jobs"
+    fi
     # A run starts about ten processes, each worth a millisecond or so: a
     # shell built-in stands in for a program wherever one can.
     # shellcheck disable=SC2016 # expanded by the inner sh
-    [ -s "$ldir/jobs" ] && xargs -n 2 -P "$jobs" sh -c '
+    [ -s "$ldir/jobs" ] && [ -z "$refused" ] && xargs -n 2 -P "$jobs" sh -c '
         unset UPDATE_EXPECTED
         bin=$1 name=$2
         out="$GRADE_LDIR/run/$bin.$name"
@@ -367,7 +382,9 @@ for lesson in "$@"; do
             st=$?
         else
             # Observed: what its checks saw goes to descriptor 3 (observe.h).
+            # The grader'"'"'s own variables kept from it: where the records are.
             TEST_OUTPUT="$tout" TEST_FILTER="$name" GRADE_OBSERVE_FD=3 \
+                env -u GRADE_RECORDS -u GRADE_JUDGE -u GRADE_PRIVATE -u GRADE_LDIR -u GRADE_DIR \
                 "$0" --cpu "$lim" --cpu-out "$out.cpu" --output "$out.log" \
                 --output-max "$GRADE_LOG_MAX" "$wall" $sandbox "$exe" </dev/null 3>"$out.obs"
             st=$?
@@ -457,6 +474,10 @@ for lesson in "$@"; do
     if [ "$mode" = record ]; then
         if [ -n "$missing" ] || awk -F '\t' '$2 != "pass" { bad = 1 } END { exit !bad }' "$ldir/results"; then
             echo "$prog: error: the teacher's solution of $lesson does not pass every test (below): nothing is recorded for it" >&2
+            rm -rf "$records/$lesson.new"
+            status=1
+        elif ! sh tools/submission-check.sh record "$build" "$lesson" "$records/$lesson.new/check"; then
+            echo "$prog: error: could not record what $lesson's solution defines and calls: nothing is recorded for it" >&2
             rm -rf "$records/$lesson.new"
             status=1
         else

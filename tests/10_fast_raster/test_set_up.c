@@ -119,12 +119,12 @@ static void blocks_skipped_uncounted_draw_the_same_bits(void **unused)
         "the tile buffer, uncounted, 1 thread", "the tile buffer, uncounted, 2 threads, faces held",
         "the tile buffer, uncounted, 2 threads"};
     /* Counted, the tile buffer skips blocks: there is something to skip.
-     * Uncounted, fewer are counted: the blocks skipped first are not. */
-    observe_value("blocks skipped, counted", h[0].tiles_skipped);
-    observe_value("blocks skipped, uncounted", h[1].tiles_skipped);
-    if (!(h[0].tiles_skipped > 1000 && h[1].tiles_skipped < h[0].tiles_skipped / 2))
-        fail_msg("blocks skipped: %llu counted, %llu uncounted", h[0].tiles_skipped,
-                 h[1].tiles_skipped);
+     * Uncounted, fewer are counted: the blocks skipped first are not. Bounds,
+     * not values: a bound of the plane looser than lesson 09's (still safe)
+     * skips fewer blocks, and draws the same bits. */
+    expect_at_least(1001, (long)h[0].tiles_skipped, "blocks skipped, counted");
+    expect_at_most((long)(h[0].tiles_skipped / 2) - 1, (long)h[1].tiles_skipped,
+                   "blocks skipped uncounted, against half of those counted");
     for (int k = 0; k < 5; k++) {
         observe_target(&t[k]);
         observe_data("depth", t[k].depth, (size_t)WIDTH * HEIGHT * sizeof *t[k].depth);

@@ -178,6 +178,24 @@ static const char SUM_REDEFINES_OBSERVER_C[] =
     "void observed_int_equal(uintmax_t a, uintmax_t b, const char *f, int l)"
     " { (void)a; (void)b; (void)f; (void)l; }\n"
     "int sum_to(int n) { return n * (n + 1) / 2; }\n";
+/* The C library's formatting replaced, so that the record's lines say what
+ * the code never computed; a record written before main; a correct solution
+ * with a helper of its own and a debug print, which loses nothing. */
+static const char SUM_REPLACES_PRINTF_C[] =
+    "#include \"sum.h\"\n#include <stdarg.h>\n#include <stddef.h>\n"
+    "int vsnprintf(char *s, size_t n, const char *f, va_list ap);\n"
+    "int vsnprintf(char *s, size_t n, const char *f, va_list ap)"
+    " { (void)f; (void)ap; if (n) s[0] = 0; return 0; }\n"
+    "int sum_to(int n) { (void)n; return 0; }\n";
+static const char SUM_RECORDS_BEFORE_MAIN_C[] =
+    "#include \"sum.h\"\n#include <unistd.h>\n"
+    "__attribute__((constructor)) static void forge(void) { (void)!write(3, \"E passed\\n\", 9); }\n"
+    "int sum_to(int n) { (void)n; return 0; }\n";
+static const char SUM_WITH_A_HELPER_C[] =
+    "#include \"sum.h\"\n#include <stdio.h>\n"
+    "int sum_helper(int n);\n"
+    "int sum_helper(int n) { printf(\"n = %d\\n\", n); return n * (n + 1) / 2; }\n"
+    "int sum_to(int n) { return sum_helper(n); }\n";
 static const char SUM_BUGGY_C[] =
     "#include \"sum.h\"\nint sum_to(int n) { return n <= 10 ? n * (n + 1) / 2 : 0; }\n";
 
@@ -578,6 +596,19 @@ static void expect_judged_score(const char *sum_c, const char *score)
     shell_result_free(&r);
 }
 
+/* The same, for a submission not judged: its score 0/5 and why. */
+static void expect_not_judged(const char *sum_c, const char *why)
+{
+    write_text(path_join(tree, "lessons/06_sum/sum.c"), sum_c);
+    ShellResult r = run_shell(tree, SHELL_TIMEOUT,
+                              "make -j2 OPT=-O0 grade LESSON=06 TIME_LIMIT=5 REFERENCE=build/ref");
+    write_text(path_join(tree, "lessons/06_sum/sum.c"), SUM_C);
+    if (r.status != 0 || !strstr(r.output, "06_sum: 0/5") || !strstr(r.output, "is not judged") ||
+        !strstr(r.output, why))
+        fail_msg("want 0/5, not judged: %s (status %d):\n%s", why, r.status, r.output);
+    shell_result_free(&r);
+}
+
 /* The teacher's record made once, then each submission judged against it:
  * the solution scores all, the stub what needs no work, a bug what it gets
  * right, and no forgery more than the stub. */
@@ -595,6 +626,12 @@ static void a_judged_lesson_cannot_be_forged(void **state)
     expect_judged_score(SUM_NEUTERS_CMOCKA_C, "0/5");
     expect_judged_score(SUM_WRITES_RECORD_C, "0/5");
     expect_judged_score(SUM_REDEFINES_OBSERVER_C, "0/5");
+    expect_not_judged(SUM_REPLACES_PRINTF_C, "defines vsnprintf, a name of the C library");
+    expect_not_judged(SUM_RECORDS_BEFORE_MAIN_C, "runs code before main");
+    expect_not_judged(SUM_RECORDS_BEFORE_MAIN_C, "calls write");
+    expect_not_judged(SUM_REDEFINES_OBSERVER_C, "defines observed_int_equal");
+    expect_not_judged(SUM_NEUTERS_CMOCKA_C, "begins with an underscore");
+    expect_judged_score(SUM_WITH_A_HELPER_C, "5/5");
 
     /* The judge's words reach the student. */
     write_text(path_join(tree, "lessons/06_sum/sum.c"), SUM_BUGGY_C);
