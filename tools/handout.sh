@@ -324,6 +324,37 @@ rm -rf "$files" "$lines" "$exprs" "$tmp.inherited"
 $leaks
 Say what to compute and why in words, not the formula; nothing was written."
 
+# The README as the handout holds it: a row of the lessons' table whose
+# lesson is not there goes, a picture that is not there too, and a link to
+# a file or directory that is not there (a later lesson's page, the
+# teacher's guide) keeps its words alone.
+if [ -f "$tmp/README.md" ]; then
+    awk -v root="$tmp" '
+        function there(path,    p) {
+            p = path; sub(/#.*/, "", p)
+            return p == "" || p ~ /^[a-z]+:/ || system("test -e \"" root "/" p "\"") == 0
+        }
+        /^\| / && match($0, /\]\(lessons\/[^)]*\)/) {
+            if (!there(substr($0, RSTART + 2, RLENGTH - 3))) next
+        }
+        match($0, /<img src="[^"]*"[^>]*>/) {
+            tag = substr($0, RSTART, RLENGTH); src = tag; sub(/^<img src="/, "", src); sub(/".*/, "", src)
+            if (!there(src)) $0 = substr($0, 1, RSTART - 1) substr($0, RSTART + RLENGTH)
+        }
+        {
+            out = ""; rest = $0
+            while (match(rest, /\[[^]]*\]\([^)]*\)/)) {
+                link = substr(rest, RSTART, RLENGTH)
+                words = substr(link, 2, index(link, "](") - 2)
+                path = substr(link, index(link, "](") + 2); sub(/\)$/, "", path)
+                out = out substr(rest, 1, RSTART - 1) (there(path) ? link : words)
+                rest = substr(rest, RSTART + RLENGTH)
+            }
+            print out rest
+        }' "$tmp/README.md" >"$tmp/README.md.new" && mv "$tmp/README.md.new" "$tmp/README.md" ||
+        die "cannot write the handout's README.md"
+fi
+
 echo "handout of lessons/$name, made by make handout" >"$tmp/.handout"
 rm -rf "$dest"
 mv "$tmp" "$dest" || die "cannot move the handout to $dest"

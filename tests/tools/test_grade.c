@@ -457,10 +457,23 @@ static void handout_replaces_the_region_by_stub_and_hint(void **state)
 {
     (void)state;
     const char *dest = abs_test_dir("grade_handout");
+    /* A README whose table and links name a lesson the handout leaves out. */
+    write_text(path_join(tree, "README.md"),
+               "| | lesson |\n|---|---|\n"
+               "| <img src=\"docs/images/08_x.png\" alt=\"x\"> | [08 plain](lessons/08_plain/) |\n"
+               "| <img src=\"docs/images/09_y.png\" alt=\"y\"> | [09 fake](lessons/09_fake/) |\n"
+               "[the guide](docs/teaching.md) and [the tests](tests/).\n");
     ShellResult r = shell_ok(tree, "sh tools/handout.sh --only --dest %s/h 09", dest);
+    remove(path_join(tree, "README.md"));
     assert_non_null(strstr(r.output, "lessons/09_fake/fake.c:6:"));
     shell_result_free(&r);
     const char *h = path_join(dest, "h");
+    char *readme = read_text(path_join(h, "README.md"));
+    const char *want_readme = "| | lesson |\n|---|---|\n|  | [09 fake](lessons/09_fake/) |\n"
+                              "the guide and [the tests](tests/).\n";
+    if (strcmp(readme, want_readme) != 0)
+        fail_msg("the handout's README should hold\n%s\nit is\n%s", want_readme, readme);
+    free(readme);
     char *fake = read_text(path_join(h, "lessons/09_fake/fake.c"));
     const char *want =
         "int fake_add(int a, int b)\n{\n"
