@@ -31,8 +31,8 @@
 #define GUARD_BAND_MAX_OUT(n) ((n) + 4)
 
 typedef enum {
-    LINEAR_D,     /* d is linear in screen space (lesson 02, the naive way) */
-    LINEAR_INV_D  /* 1/d is linear in screen space (lessons 03 and 04, the right way) */
+    LINEAR_D,     /* d is linear in screen space (lesson 02) */
+    LINEAR_INV_D  /* 1/d is linear in screen space */
 } DepthLinearity;
 
 /* True when every vertex lies inside the guard band of a width x height screen. */
