@@ -608,6 +608,10 @@ int cli_parse_quiet(const LessonCli *spec, int argc, char **argv, Options *opt, 
         if (status != CLI_CONTINUE)
             return status;
     }
+    for (int i = 0; i < extra_count(spec); i++) /* the default run's own outputs */
+        if (spec->extra[i].output && spec->extra[i].default_run && !opt->extra[i] &&
+            !p.seen[FLAG_OUT])
+            opt->extra[i] = spec->extra[i].default_run;
     if (!check_trace(&p) || !check_ascii(&p) || !check_compare(&p) || !check_paths(&p))
         return EXIT_USAGE;
     return CLI_CONTINUE;

@@ -47,12 +47,16 @@ enum {
 /* A flag of one lesson's own, e.g. {"--painter", NULL, "draw back to front, no depth buffer"}.
  * An output ({"--colour-out", "FILE.png", "...", .output = true}) is checked as
  * the shared ones are, before anything is drawn: a name that is not empty nor
- * "-", and no other output or input of the run under any spelling. */
+ * "-", and no other output or input of the run under any spelling. An output
+ * the default run writes too (.default_run = "out/x.png") takes that value
+ * when neither it nor --out is given, before the checks: it is checked as
+ * if it had been given. */
 typedef struct {
     const char *flag;
     const char *metavar; /* NULL for a switch; the value's name otherwise */
     const char *help;
     bool output;         /* its value names a file the run writes */
+    const char *default_run; /* an output's file when neither it nor --out is given, or NULL */
 } LessonFlag;
 
 typedef struct {

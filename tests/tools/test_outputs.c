@@ -3,7 +3,8 @@
  *
  *   - two outputs, or an output and an input (OBJ, .mtl, segments, --compare
  *     reference), that are one file under two names are refused, status 2,
- *     a lesson's own outputs (--colour-out, --hiz-out, ...) as the shared ones;
+ *     a lesson's own outputs (--colour-out, --hiz-out, ...) as the shared ones,
+ *     and one its default run writes (lesson 09's skip picture) as if given;
  *   - a failed output leaves no output of the run new or changed;
  *   - SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGUSR1 and SIGABRT during a
  *     large write remove the temporary files, status 128 + the signal; a
@@ -160,6 +161,35 @@ static void outputs_and_inputs_are_compared_by_identity(void **state)
     now = read_text(mtl.path);
     assert_string_equal(now, "newmtl red\nKd 1 0 0\n");
     free(now);
+}
+
+/* Lesson 09's default run (no --out) writes its skip picture too, to
+ * out/09_hierarchical_z_skips.png: checked as if --skip-out had been given,
+ * against an input and against another output. */
+static void a_default_output_is_checked_as_a_given_one(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("outputs_default_skip");
+    Path skips = in_dir(dir, "out/09_hierarchical_z_skips.png");
+    assert_int_equal(mkdir(path_join(dir, "out"), 0777), 0);
+    write_text(skips.path, TRIANGLE_OBJ);
+    const char *as_obj[] = {"--obj", "out/09_hierarchical_z_skips.png", NULL};
+    const char *as_ids[] = {"--id-out", "out/09_hierarchical_z_skips.png", NULL};
+    const char *const *args[] = {as_obj, as_ids};
+    const char *first[] = {"--obj", "--id-out"};
+    for (int i = 0; i < 2; i++) {
+        RunResult r = run_program_in(dir, "09_hierarchical_z", args[i]);
+        char want[TEXT_MAX];
+        snprintf(want, sizeof want, "09_hierarchical_z: error: %s and --skip-out both name "
+                 "out/09_hierarchical_z_skips.png\n", first[i]);
+        assert_string_equal(r.err, want);
+        expect_count(2, r.status, "exit status");
+        run_result_free(&r);
+        char *now = read_text(skips.path);
+        assert_string_equal(now, TRIANGLE_OBJ);
+        free(now);
+    }
+    assert_false(file_exists(path_join(dir, "out/09_hierarchical_z.png")));
 }
 
 /* Every output a run writes is listed under its summary, a lesson's own too. */
@@ -502,6 +532,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(outputs_and_inputs_are_compared_by_identity),
+        cmocka_unit_test(a_default_output_is_checked_as_a_given_one),
         cmocka_unit_test(every_output_is_listed_in_the_summary),
         cmocka_unit_test(failed_output_leaves_no_output_of_the_run),
         cmocka_unit_test(signal_during_a_large_write_removes_the_temporary_files),

@@ -29,7 +29,7 @@ static const LessonFlag FLAGS[FLAG_COUNT] = {
     [FLAG_SKIP_OUT] = {"--skip-out", "FILE.png",
                        "the picture, each tile tinted by how many triangles it skipped, with a "
                        "legend (the default run: " DEFAULT_SKIP_OUT ")",
-                       .output = true},
+                       .output = true, .default_run = DEFAULT_SKIP_OUT},
     EARLY_Z_FLAGS,
 };
 
@@ -75,8 +75,6 @@ static bool choose(Run *run, Error *err)
                          x[FLAG_HIZ_UPDATE]);
     if (!early_z_flags_ok(run, x[FLAG_Z_MODE], x[FLAG_SORT], x[FLAG_BUG], err))
         return false;
-    if (run->opt.out == run->default_out && !x[FLAG_SKIP_OUT]) /* no --out: the default run */
-        run->opt.extra[FLAG_SKIP_OUT] = DEFAULT_SKIP_OUT;
     run->after_write = after_write;
     return true;
 }
