@@ -12,22 +12,30 @@ bool image_size_ok(int width, int height, Error *err)
     return false;
 }
 
-bool image_init(Image *im, int width, int height, Error *err)
+bool image_init_with_band(Image *im, int width, int height, int band, Error *err)
 {
     im->width = 0;
     im->height = 0;
     im->rgb = NULL;
     if (!image_size_ok(width, height, err))
         return false;
-    /* At most 16384 * 16384 pixels: the count fits a size_t, and calloc
-     * checks the multiplication by 3 itself. */
-    size_t pixels = (size_t)width * (size_t)height;
+    if (band < 0 || band > IMAGE_MAX_BAND)
+        return error_set(err, "a band of %d rows under a picture is out of range (0 to %d)",
+                         band, IMAGE_MAX_BAND);
+    /* At most 16384 * (16384 + 64) pixels: the count fits a size_t, and
+     * calloc checks the multiplication by 3 itself. */
+    size_t pixels = (size_t)width * (size_t)(height + band);
     im->rgb = calloc(pixels, IMAGE_CHANNELS);
     if (!im->rgb)
-        return error_set(err, "out of memory for a %dx%d image", width, height);
+        return error_set(err, "out of memory for a %dx%d image", width, height + band);
     im->width = width;
-    im->height = height;
+    im->height = height + band;
     return true;
+}
+
+bool image_init(Image *im, int width, int height, Error *err)
+{
+    return image_init_with_band(im, width, height, 0, err);
 }
 
 void image_free(Image *im)

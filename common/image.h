@@ -10,8 +10,12 @@
 
 #include "error.h"
 
-/* docs/conventions.md: images are 1 to 16384 pixels on a side. */
+/* docs/conventions.md: images are 1 to 16384 pixels on a side. A picture
+ * may carry a band of up to IMAGE_MAX_BAND rows under it (its legend,
+ * harness/legend.h), so that a picture of the largest size keeps its
+ * legend: such an image is that much taller (image_init_with_band). */
 #define IMAGE_MAX_SIDE 16384
+#define IMAGE_MAX_BAND 64
 
 #define IMAGE_CHANNELS 3 /* r, g, b */
 
@@ -26,6 +30,9 @@ typedef struct {
 bool image_size_ok(int width, int height, Error *err);
 /* A black image. False (with err set) on a bad size or no memory. */
 bool image_init(Image *im, int width, int height, Error *err);
+/* The same, band rows taller (0 to IMAGE_MAX_BAND): width x (height + band),
+ * width and height in range as for image_init. */
+bool image_init_with_band(Image *im, int width, int height, int band, Error *err);
 void image_free(Image *im);
 void image_fill(Image *im, Rgb c);
 

@@ -189,7 +189,9 @@ static bool encode_png(AtomicFile *f, const Image *im)
 
 bool image_write_png(const Image *im, const char *path, Error *err)
 {
-    if (!im->rgb || !image_size_ok(im->width, im->height, NULL))
+    /* A picture with a band under it may be IMAGE_MAX_BAND rows taller. */
+    int picture_height = im->height > IMAGE_MAX_SIDE ? im->height - IMAGE_MAX_BAND : im->height;
+    if (!im->rgb || !image_size_ok(im->width, picture_height, NULL))
         return error_set(err, "cannot write %s: the image is empty", path);
     AtomicFile f;
     if (!atomic_open(&f, path, err))

@@ -53,7 +53,7 @@ bool image_with_legend(Image *out, const Image *picture, int band_height,
     draw(&measure, ctx);
     int width = measure.x + LEGEND_MARGIN > picture->width ? measure.x + LEGEND_MARGIN
                                                            : picture->width;
-    if (!image_init(out, width, picture->height + band_height, err))
+    if (!image_init_with_band(out, width, picture->height, band_height, err))
         return false;
     image_fill(out, BAND);
     for (int y = 0; y < picture->height; y++)

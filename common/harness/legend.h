@@ -22,9 +22,11 @@ void legend_swatch(LegendBand *b, Rgb fill, int width, int height, bool framed);
 void legend_ramp(LegendBand *b, const Rgb *colours, int n, int height);
 void legend_gap(LegendBand *b, int pixels);
 
-/* out: picture with a band of band_height rows under it, its legend drawn by
- * draw(band, ctx); as wide as the picture or as the legend (and a margin),
- * whichever is wider; what the picture does not cover is the band's grey. */
+/* out: picture with a band of band_height rows (at most IMAGE_MAX_BAND)
+ * under it, its legend drawn by draw(band, ctx); as wide as the picture or
+ * as the legend (and a margin), whichever is wider; what the picture does
+ * not cover is the band's grey. A picture of the largest height keeps its
+ * band: out is then taller than IMAGE_MAX_SIDE (image.h). */
 bool image_with_legend(Image *out, const Image *picture, int band_height,
                        void (*draw)(LegendBand *b, const void *ctx), const void *ctx,
                        Error *err);

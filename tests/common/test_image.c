@@ -78,6 +78,25 @@ static void image_init_rejects_sides_outside_1_to_16384(void **state)
     }
 }
 
+/* A picture of the largest height keeps the band of its legend under it
+ * (legend.h): up to IMAGE_MAX_BAND rows more, and no band beyond that. */
+static void a_band_may_take_a_picture_past_16384_rows(void **state)
+{
+    (void)state;
+    Image im;
+    Error err;
+    assert_true(image_init_with_band(&im, 1, 16384, 64, &err));
+    expect_count(16384 + 64, im.height, "picture height, band included");
+    image_set(&im, 0, 16384 + 63, (Rgb){1, 2, 3}); /* the band's last row is writable */
+    expect_pixel(&im, 0, 16384 + 63, (Rgb){1, 2, 3}, "");
+    image_free(&im);
+    assert_false(image_init_with_band(&im, 1, 16384, 65, &err));
+    assert_string_equal(err.msg, "a band of 65 rows under a picture is out of range (0 to 64)");
+    assert_false(image_init_with_band(&im, 1, 16385, 0, &err));
+    assert_string_equal(err.msg, "image size 1x16385 is out of range (1 to 16384)");
+    assert_null(im.rgb);
+}
+
 static void image_fill_sets_every_pixel(void **state)
 {
     (void)state;
@@ -508,6 +527,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(image_init_accepts_sides_from_1_to_16384),
         cmocka_unit_test(image_init_rejects_sides_outside_1_to_16384),
+        cmocka_unit_test(a_band_may_take_a_picture_past_16384_rows),
         cmocka_unit_test(image_fill_sets_every_pixel),
         cmocka_unit_test(png_round_trip_keeps_every_pixel),
         cmocka_unit_test(png_round_trip_of_noise_and_gradients),

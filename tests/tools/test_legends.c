@@ -10,7 +10,11 @@
  *   - at 8 x 8 the run succeeds, the picture is 8 + 22 rows tall and wider
  *     than 8 columns; right of the render's 8 columns, above the band, is
  *     the band's grey: nothing of the legend lies over the picture;
- *   - at the default 800 x 600 the legend fits: the picture is 800 wide. */
+ *   - at the default 800 x 600 the legend fits: the picture is 800 wide;
+ *   - at the largest height, 16384, the run succeeds and the picture keeps
+ *     its band, 16384 + 22 rows (it used to fail, "image size 800x16406 is
+ *     out of range", status 1, and so did lesson 09's default run, which
+ *     writes the skip picture). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -89,11 +93,54 @@ static void the_legend_fits_a_picture_of_the_default_size(void **state)
     }
 }
 
+/* The width and height in a PNG's header (read without decoding: the series'
+ * reader takes pictures of up to 16384 rows, legend bands aside). */
+static void png_size(const char *path, unsigned *width, unsigned *height)
+{
+    unsigned char b[24];
+    FILE *fp = fopen(path, "rb");
+    if (!fp || fread(b, 1, sizeof b, fp) != sizeof b || memcmp(b + 12, "IHDR", 4) != 0)
+        fail_msg("%s: no PNG header", path);
+    fclose(fp);
+    *width = (unsigned)b[16] << 24 | (unsigned)b[17] << 16 | (unsigned)b[18] << 8 | b[19];
+    *height = (unsigned)b[20] << 24 | (unsigned)b[21] << 16 | (unsigned)b[22] << 8 | b[23];
+}
+
+static void a_picture_of_the_largest_height_keeps_its_legend(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("legend_tallest");
+    Path picture = in_dir(dir, "legend.png"), out = in_dir(dir, "out.png");
+    unsigned w, h;
+    for (size_t k = 0; k < sizeof OUTPUTS / sizeof OUTPUTS[0]; k++) {
+        const LegendOutput *o = &OUTPUTS[k];
+        const char *args[] = {o->flag, picture.path, "--out", out.path, "--width", "1",
+                              "--height", "16384", NULL};
+        RunResult r = run_program(o->lesson, args);
+        if (r.status != 0)
+            fail_msg("%s %s at 1 x 16384: status %d\n%s", o->lesson, o->flag, r.status, r.err);
+        run_result_free(&r);
+        png_size(picture.path, &w, &h);
+        if (h != 16384 + BAND || w < LEGEND_MIN_WIDTH)
+            fail_msg("%s %s at 1 x 16384: %u x %u, wanted at least %d x %d", o->lesson, o->flag,
+                     w, h, LEGEND_MIN_WIDTH, 16384 + BAND);
+    }
+    /* The default run writes the skip picture too. */
+    const char *tall[] = {"--width", "1", "--height", "16384", NULL};
+    RunResult r = run_program_in(dir, "09_hierarchical_z", tall);
+    if (r.status != 0)
+        fail_msg("09_hierarchical_z --width 1 --height 16384: status %d\n%s", r.status, r.err);
+    run_result_free(&r);
+    png_size(path_join(dir, "out/09_hierarchical_z_skips.png"), &w, &h);
+    expect_count(16384 + BAND, (long)h, "skip picture height, legend included");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(a_narrow_picture_gets_its_whole_legend_beside_it),
         cmocka_unit_test(the_legend_fits_a_picture_of_the_default_size),
+        cmocka_unit_test(a_picture_of_the_largest_height_keeps_its_legend),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
