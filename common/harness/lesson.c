@@ -9,8 +9,10 @@
 #include "file.h"
 
 /* Before anything is drawn: no output may replace a .mtl file the OBJ read
- * (known only once it is loaded: a usage error, as for --obj itself), and
- * every output must be writable (a failure while running). */
+ * (known only once it is loaded: a usage error, as for --obj itself),
+ * --id-out must be able to number every face of the mesh, and every output
+ * must be writable (both failures while running, as --steps refusing a mesh
+ * of too many faces is). */
 static int check_outputs(Run *run)
 {
     enum { SHARED = 6, MAX = SHARED + CLI_MAX_EXTRA };
@@ -44,6 +46,8 @@ static int check_outputs(Run *run)
             return EXIT_USAGE;
         }
     }
+    if (o->id_out && !face_ids_fit(m->nfaces, &run->err))
+        return EXIT_RUN_FAILED;
     for (int i = 0; i < n; i++)
         if (path[i] && !output_check(path[i], &run->err))
             return EXIT_RUN_FAILED;

@@ -103,6 +103,14 @@ Rgb face_id_colour(int face)
     return c;
 }
 
+bool face_ids_fit(int nfaces, Error *err)
+{
+    if (nfaces <= FACE_ID_MAX_FACES)
+        return true;
+    return error_set(err, "--id-out: the mesh has %d faces; an id picture numbers faces in 24 "
+                          "bits and tells at most %d apart", nfaces, FACE_ID_MAX_FACES);
+}
+
 Rgb face_shade_id_colour(int face)
 {
     return ID_PALETTE[(unsigned)face % ID_PALETTE_SIZE];

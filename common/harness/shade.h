@@ -50,6 +50,12 @@ Rgb face_shade_id_colour(int face);
 Rgb face_id_colour(int face);
 /* The inverse: the face index a pixel of an id picture shows, NO_FACE for black. */
 int32_t id_colour_face(Rgb c);
+/* The most faces an id picture can tell apart: face 16777214 is white,
+ * face 16777215 would wrap to black, the background. */
+#define FACE_ID_MAX_FACES 0xFFFFFF
+/* True when every face of a mesh of nfaces faces has its own id colour;
+ * false, err set, otherwise (--id-out refuses such a mesh before drawing). */
+bool face_ids_fit(int nfaces, Error *err);
 
 /* out (initialised here) gets one colour per pixel of face[] (width x height):
  * flat or id colours. For SHADE_DEPTH pass the view depth in view_depth

@@ -9,6 +9,7 @@
 
 #include <cmocka.h>
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -129,6 +130,23 @@ static void id_colours_are_face_plus_one_big_endian(void **state)
     expect_count(0x123455, id_colour_face(c), "face of the id colour");
     Rgb black = {0, 0, 0};
     expect_count(NO_FACE, id_colour_face(black), "face of black");
+}
+
+/* 24 bits number 16777215 faces: the last one is white, and one more would
+ * wrap to black, the background. --id-out refuses such a mesh. */
+static void id_colours_number_at_most_16777215_faces(void **state)
+{
+    (void)state;
+    Error err;
+    Rgb white = {255, 255, 255};
+    expect_colour(white, face_id_colour(FACE_ID_MAX_FACES - 1), "id colour of the last face");
+    expect_count(FACE_ID_MAX_FACES - 1, id_colour_face(white), "face of white");
+    assert_true(face_ids_fit(0, &err));
+    assert_true(face_ids_fit(FACE_ID_MAX_FACES, &err));
+    assert_false(face_ids_fit(FACE_ID_MAX_FACES + 1, &err));
+    assert_string_equal(err.msg, "--id-out: the mesh has 16777216 faces; an id picture numbers "
+                                 "faces in 24 bits and tells at most 16777215 apart");
+    assert_false(face_ids_fit(INT_MAX, &err));
 }
 
 /* A unit square in the plane z = -5, facing the camera at the origin. */
@@ -436,6 +454,7 @@ int main(void)
         cmocka_unit_test(clip_puts_new_corners_on_the_band_with_the_lessons_depth),
         cmocka_unit_test(clip_survives_the_largest_doubles),
         cmocka_unit_test(id_colours_are_face_plus_one_big_endian),
+        cmocka_unit_test(id_colours_number_at_most_16777215_faces),
         cmocka_unit_test(shade_id_colours_are_far_apart),
         cmocka_unit_test(flat_colour_is_kd_times_lambert),
         cmocka_unit_test(faces_without_material_get_distinct_palette_colours),
