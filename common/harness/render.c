@@ -16,6 +16,7 @@
 #define FIT_NEAR_FRACTION 0.5  /* near: half the distance to the sphere's front */
 #define FIT_FAR_FACTOR 1.5     /* far: well behind the sphere's back */
 #define FIT_BACK_OFF_STEPS 2100 /* doublings: enough to span every double */
+#define FIT_INSIDE_NEAR 1e-3   /* near for an eye inside the sphere: this much of its radius */
 
 static void render_clear(Render *r)
 {
@@ -72,6 +73,8 @@ static void scene_names(char *buf, size_t size)
     }
 }
 
+static void fit_planes_to_eye(const Mesh *m, Vec3 eye, SceneInfo *s); /* below */
+
 /* Fills r->mesh from --obj or --scene and tells which camera frames it. */
 static int load_mesh(Render *r, const Options *opt, SceneInfo *framing, Error *err)
 {
@@ -80,6 +83,8 @@ static int load_mesh(Render *r, const Options *opt, SceneInfo *framing, Error *e
             return EXIT_RUN_FAILED;
         snprintf(r->source, sizeof r->source, "%s", opt->obj);
         *framing = render_fit_camera(&r->mesh, opt->width, opt->height);
+        if (opt->eye_set)
+            fit_planes_to_eye(&r->mesh, opt->eye, framing);
         return EXIT_OK;
     }
     const SceneInfo *scene = scene_find(opt->scene ? opt->scene : "");
@@ -374,6 +379,34 @@ static bool bounding_sphere(const Mesh *m, Vec3 *centre, double *radius)
     *radius = vec3_length(vec3(hi.x / 2 - lo.x / 2, hi.y / 2 - lo.y / 2, hi.z / 2 - lo.z / 2));
     return isfinite(*radius) && isfinite(centre->x) && isfinite(centre->y) &&
            isfinite(centre->z);
+}
+
+/* The bounding sphere as the fitted camera takes it: a single point has
+ * radius 1, and a mesh that has none (empty, or too big for a double) gets
+ * the unit sphere at the origin. */
+static void fit_sphere(const Mesh *m, Vec3 *centre, double *radius)
+{
+    if (!bounding_sphere(m, centre, radius) || !isfinite(*radius)) {
+        *centre = vec3(0, 0, 0);
+        *radius = 1;
+    } else if (*radius == 0) {
+        *radius = 1;
+    }
+}
+
+/* An eye given on the command line (--eye, no --near or --far) gets the
+ * planes render_fit_camera gives its own eye, measured from that eye: near
+ * half-way to the sphere's front, far beyond its back, so that the whole
+ * model lies between them. From inside the sphere, near is a thousandth
+ * of its radius. */
+static void fit_planes_to_eye(const Mesh *m, Vec3 eye, SceneInfo *s)
+{
+    Vec3 centre;
+    double radius;
+    fit_sphere(m, &centre, &radius);
+    double distance = vec3_length(vec3_sub(eye, centre));
+    s->near = fmax((distance - radius) * FIT_NEAR_FRACTION, radius * FIT_INSIDE_NEAR);
+    s->far = (distance + radius) * FIT_FAR_FACTOR;
 }
 
 SceneInfo render_fit_camera(const Mesh *m, int width, int height)

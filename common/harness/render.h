@@ -21,7 +21,11 @@
  * A lesson's main.c calls them through lesson.h.
  *
  * Framing of --obj: the mesh is framed by a camera fitted to its bounds (see
- * render_fit_camera); camera flags given on the command line still win. */
+ * render_fit_camera); camera flags given on the command line still win. With
+ * --eye given and --near or --far not, that plane is fitted by the same rule
+ * to the eye given: near half-way from it to the bounding sphere (a
+ * thousandth of the sphere's radius from inside it), far 1.5 times the
+ * distance to the sphere's back. */
 #ifndef RENDER_H
 #define RENDER_H
 

@@ -1,10 +1,16 @@
-/* test_far_planes.c: a far plane is finite unless it is --far inf.
+/* test_far_planes.c: the near and far planes a run gets.
  *
- * Lessons 06, 07 and 10 stand for --far inf (the reversed mapping's) with a
- * far plane of 1e30 in clip space, and took any far plane that large as
- * infinite: in the standard mapping, z_w = f/(f-n) (1 - n/d) was then NaN,
- * nothing was drawn, and the run said it had succeeded. Now --far 1e30 and
- * --far 1e29 draw the same faces, and some. */
+ * A far plane is finite unless it is --far inf. Lessons 06, 07 and 10
+ * stand for --far inf (the reversed mapping's) with a far plane of 1e30 in
+ * clip space, and took any far plane that large as infinite: in the
+ * standard mapping, z_w = f/(f-n) (1 - n/d) was then NaN, nothing was
+ * drawn, and the run said it had succeeded. Now --far 1e30 and --far 1e29
+ * draw the same faces, and some.
+ *
+ * An OBJ seen from an eye given with --eye, without --near or --far, gets
+ * its planes fitted to that eye, not to the camera --obj would have chosen:
+ * from inside a cube, or 20 units from it, the picture used to be blank,
+ * the model outside the planes, and the run exited 0. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -48,10 +54,41 @@ static void a_far_plane_of_1e30_is_finite_in_the_standard_mapping(void **state)
     }
 }
 
+/* A cube 2 units wide at the origin. From inside it the face at z = -1
+ * (face 0) fills the view; from 20 units away the face at z = +1 (face 1)
+ * shows at the centre, and the corners are background. */
+static void planes_are_fitted_to_the_eye_given(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("eye_planes");
+    Path obj = in_dir(dir, "cube.obj"), ids = in_dir(dir, "ids.png"), out = in_dir(dir, "out.png");
+    write_text(obj.path, "v -1 -1 -1\nv 1 -1 -1\nv 1 1 -1\nv -1 1 -1\n"
+                         "v -1 -1 1\nv 1 -1 1\nv 1 1 1\nv -1 1 1\n"
+                         "f 1 2 3 4\nf 5 6 7 8\nf 1 2 6 5\nf 4 3 7 8\nf 1 4 8 5\nf 2 3 7 6\n");
+    const char *lessons[] = {"05_clipping", "10_fast_raster"};
+    const char *eyes[][2] = {{"0,0,0", "0,0,-1"}, {"0,0,20", "0,0,0"}};
+    const int32_t centre[] = {0, 1}, corner[] = {0, NO_FACE};
+    for (size_t k = 0; k < sizeof lessons / sizeof lessons[0]; k++)
+        for (int e = 0; e < 2; e++) {
+            const char *args[] = {"--obj", obj.path, "--eye", eyes[e][0], "--target", eyes[e][1],
+                                  "--width", "64", "--height", "48", "--out", out.path,
+                                  "--id-out", ids.path, NULL};
+            free(run_ok(lessons[k], args));
+            Image im = read_png(ids.path);
+            char what[128];
+            snprintf(what, sizeof what, "%s from %s, the centre", lessons[k], eyes[e][0]);
+            expect_face_at(&im, 32, 24, centre[e], what);
+            snprintf(what, sizeof what, "%s from %s, a corner", lessons[k], eyes[e][0]);
+            expect_face_at(&im, 0, 0, corner[e], what);
+            image_free(&im);
+        }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(a_far_plane_of_1e30_is_finite_in_the_standard_mapping),
+        cmocka_unit_test(planes_are_fitted_to_the_eye_given),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
