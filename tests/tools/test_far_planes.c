@@ -5,7 +5,10 @@
  * clip space, and took any far plane that large as infinite: in the
  * standard mapping, z_w = f/(f-n) (1 - n/d) was then NaN, nothing was
  * drawn, and the run said it had succeeded. Now --far 1e30 and --far 1e29
- * draw the same faces, and some.
+ * draw the same faces, and some. A --near at or beyond that stand-in, with
+ * --far inf, used to be refused as "--far: 1e+30 is out of range (far must
+ * be greater than near, 1e+30)", a far plane the user never typed: the
+ * message now names --near and why.
  *
  * An OBJ seen from an eye given with --eye, without --near or --far, gets
  * its planes fitted to that eye, not to the camera --obj would have chosen:
@@ -54,6 +57,24 @@ static void a_far_plane_of_1e30_is_finite_in_the_standard_mapping(void **state)
     }
 }
 
+static void a_near_plane_past_the_stand_in_for_far_inf_is_named(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("far_inf_near");
+    Path out = in_dir(dir, "out.png");
+    const char *lessons[] = {"06_depth_precision", "07_depth_bias", "10_fast_raster"};
+    const char *nears[][2] = {{"1e30", "1e+30"}, {"5e30", "5e+30"}};
+    for (size_t k = 0; k < sizeof lessons / sizeof lessons[0]; k++)
+        for (int n = 0; n < 2; n++) {
+            const char *args[] = {"--depth-mapping", "reversed", "--near", nears[n][0], "--far",
+                                  "inf", "--out", out.path, NULL};
+            char want[160];
+            snprintf(want, sizeof want, "--near: %s is out of range: with --far inf, near must "
+                     "be below 1e+30", nears[n][1]);
+            expect_run_refused(lessons[k], args, 2, want, out.path);
+        }
+}
+
 /* A cube 2 units wide at the origin. From inside it the face at z = -1
  * (face 0) fills the view; from 20 units away the face at z = +1 (face 1)
  * shows at the centre, and the corners are background. */
@@ -88,6 +109,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(a_far_plane_of_1e30_is_finite_in_the_standard_mapping),
+        cmocka_unit_test(a_near_plane_past_the_stand_in_for_far_inf_is_named),
         cmocka_unit_test(planes_are_fitted_to_the_eye_given),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
