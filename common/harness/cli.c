@@ -733,6 +733,7 @@ static void print_help(const LessonCli *spec, FILE *out)
                  "  2  bad command line\n");
     if (spec->groups & CLI_COMPARE)
         fprintf(out, "  3  --compare found a difference\n");
+    fprintf(out, "  128+N  stopped by signal N (130: Ctrl-C, 143: SIGTERM)\n");
 }
 
 /* ---- The camera ---------------------------------------------------------------- */

@@ -83,11 +83,45 @@ static const int CLEANUP_SIGNALS[] = {SIGINT,  SIGTERM,   SIGHUP,  SIGPIPE, SIGQ
                                       SIGALRM, SIGUSR1,   SIGUSR2, SIGABRT, SIGVTALRM,
                                       SIGPROF, SIGXCPU};
 #define CLEANUP_SIGNAL_COUNT ((int)(sizeof CLEANUP_SIGNALS / sizeof CLEANUP_SIGNALS[0]))
+/* Their names, in the same order, for the line the handler prints. */
+static const char *const CLEANUP_SIGNAL_NAMES[CLEANUP_SIGNAL_COUNT] = {
+    "SIGINT",  "SIGTERM", "SIGHUP",  "SIGPIPE", "SIGQUIT",   "SIGALRM",
+    "SIGUSR1", "SIGUSR2", "SIGABRT", "SIGVTALRM", "SIGPROF", "SIGXCPU"};
+
+/* "<program>: error: stopped by ", set by signals_begin before any handler
+ * can run; empty (a tool that did not call it): the handler prints nothing. */
+static char stop_prefix[160];
 
 static char *volatile temp_slot[TEMP_SLOTS];
 static volatile int temp_slots_used; /* slots at and past this index are empty */
 static char *volatile dir_slot[DIR_SLOTS]; /* directories made for the pending outputs */
 static volatile int dir_slots_used;
+
+/* text appended to line[0 .. *used), as far as size allows; no library
+ * call, so that the signal handler may use it. */
+static void append_text(char *line, size_t *used, size_t size, const char *text)
+{
+    while (*text && *used < size)
+        line[(*used)++] = *text++;
+}
+
+/* One line on stderr, "<program>: error: stopped by SIGTERM", with write(2)
+ * alone. */
+static void say_stopped(int sig)
+{
+    if (stop_prefix[0] == '\0')
+        return;
+    const char *name = "a signal";
+    for (int i = 0; i < CLEANUP_SIGNAL_COUNT; i++)
+        if (CLEANUP_SIGNALS[i] == sig)
+            name = CLEANUP_SIGNAL_NAMES[i];
+    char line[sizeof stop_prefix + 16];
+    size_t used = 0;
+    append_text(line, &used, sizeof line - 1, stop_prefix);
+    append_text(line, &used, sizeof line - 1, name);
+    line[used++] = '\n';
+    (void)!write(STDERR_FILENO, line, used);
+}
 
 static void remove_temporaries_and_exit(int sig)
 {
@@ -97,6 +131,7 @@ static void remove_temporaries_and_exit(int sig)
     for (int i = dir_slots_used - 1; i >= 0; i--)
         if (dir_slot[i])
             rmdir(dir_slot[i]);
+    say_stopped(sig);
     _exit(128 + sig);
 }
 
@@ -131,6 +166,21 @@ static void block_signals(sigset_t *old)
 static void restore_signals(const sigset_t *old)
 {
     sigprocmask(SIG_SETMASK, old, NULL);
+}
+
+void signals_begin(const char *program)
+{
+    struct sigaction broken_pipe;
+    if (sigaction(SIGPIPE, NULL, &broken_pipe) == 0 && broken_pipe.sa_handler == SIG_DFL)
+        signal(SIGPIPE, SIG_IGN);
+    sigset_t old;
+    block_signals(&old);
+    size_t used = 0;
+    append_text(stop_prefix, &used, sizeof stop_prefix - 1, program);
+    append_text(stop_prefix, &used, sizeof stop_prefix - 1, ": error: stopped by ");
+    stop_prefix[used] = '\0';
+    restore_signals(&old);
+    install_handlers();
 }
 
 /* Call with the signals blocked. False when every slot is taken. */

@@ -93,9 +93,18 @@ bool output_set_publish(Error *err);
 void output_set_abort(void);
 
 /* Every temporary file that exists is listed; SIGINT, SIGTERM, SIGHUP and
- * SIGPIPE remove them all (and the directories made for them) and end the
- * program with status 128 + the signal's number. The handlers are set when
- * the first temporary file is made; a signal that was ignored stays ignored. */
+ * the other signals that end a program (file.c's list) remove them all (and
+ * the directories made for them) and end the program with status 128 + the
+ * signal's number. The handlers are set by signals_begin, or at the latest
+ * when the first temporary file is made; a signal that was ignored stays
+ * ignored. */
+
+/* At the start of a lesson: the handlers are set at once, and each prints
+ * one line on stderr before the program ends, "<program>: error: stopped by
+ * SIGTERM" (write(2) alone). SIGPIPE is ignored (unless something else
+ * handles it): a write to a pipe whose reader has gone fails with EPIPE and
+ * is reported as any failed write, "cannot write ...: Broken pipe", status 1. */
+void signals_begin(const char *program);
 
 /* While --out - sends the picture to standard output, what a lesson prints
  * there (the summary, --trace, --ascii) goes to standard error instead:

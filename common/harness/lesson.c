@@ -58,6 +58,7 @@ static int check_outputs(Run *run)
 
 int run_load(Run *run, const Lesson *lesson, int argc, char **argv)
 {
+    signals_begin(lesson->program); /* a signal from now on prints one line */
     memset(run, 0, sizeof *run);
     run->lesson = lesson;
     run->rasterizer = *lesson->rasterizer;

@@ -8,10 +8,12 @@
  *   - a failed output leaves no output of the run new or changed;
  *   - SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGUSR1 and SIGABRT during a
  *     large write remove the temporary files, status 128 + the signal; a
- *     file size limit (ulimit -f) is a failure with one line, status 1;
+ *     signal at any time prints one line naming it; a file size limit
+ *     (ulimit -f) is a failure with one line, status 1;
  *   - pipes and other files that are not regular are refused quickly;
  *   - --out - writes the PNG on standard output, the summary on stderr;
- *   - a failed write to standard output is a failure (status 1);
+ *   - a failed write to standard output is a failure (status 1), a pipe
+ *     whose reader has gone too (no SIGPIPE);
  *   - the --compare reader refuses truncated, malformed and oversized files;
  *   - and the smaller cases: long names, read-only files, links, a name
  *     ending in '/', a byte order mark, a model far from the origin, control
@@ -246,7 +248,9 @@ static void failed_output_leaves_no_output_of_the_run(void **state)
 
 /* ---- 3. signals ---- */
 
-static pid_t start(const char *program, const char *const *args, int stdout_fd)
+/* Runs program with stdout on stdout_fd and stderr on stderr_fd (-1: /dev/null). */
+static pid_t start_to(const char *program, const char *const *args, int stdout_fd,
+                      int stderr_fd)
 {
     const char *bin = getenv("BIN_DIR") ? getenv("BIN_DIR") : "build/bin";
     char path[TEXT_MAX];
@@ -258,12 +262,12 @@ static pid_t start(const char *program, const char *const *args, int stdout_fd)
     if (pid == 0) {
         /* As from a terminal: a background job's shell ignores SIGINT, and
          * the lesson leaves an ignored signal ignored. */
-        const int all[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGUSR1, SIGABRT};
+        const int all[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGALRM, SIGUSR1, SIGABRT, SIGPIPE};
         for (size_t k = 0; k < sizeof all / sizeof all[0]; k++)
             signal(all[k], SIG_DFL);
         int null = open("/dev/null", O_WRONLY);
         dup2(stdout_fd >= 0 ? stdout_fd : null, STDOUT_FILENO);
-        dup2(null, STDERR_FILENO);
+        dup2(stderr_fd >= 0 ? stderr_fd : null, STDERR_FILENO);
         char *argv[32] = {path};
         for (int i = 0; args[i] && i < 30; i++)
             argv[i + 1] = (char *)args[i];
@@ -271,6 +275,11 @@ static pid_t start(const char *program, const char *const *args, int stdout_fd)
         _exit(127);
     }
     return pid;
+}
+
+static pid_t start(const char *program, const char *const *args, int stdout_fd)
+{
+    return start_to(program, args, stdout_fd, -1);
 }
 
 static int wait_status(pid_t pid)
@@ -309,6 +318,78 @@ static void signal_during_a_large_write_removes_the_temporary_files(void **state
         assert_int_equal(status, 128 + sigs[i]);
         if (entries(dir) != 0)
             fail_msg("signal %d left %d files in %s", sigs[i], entries(dir), dir);
+    }
+}
+
+/* Whether process pid has a handler of its own for sig (SigCgt, Linux). */
+static bool catches(pid_t pid, int sig)
+{
+    char path[64], line[256];
+    snprintf(path, sizeof path, "/proc/%d/status", (int)pid);
+    FILE *fp = fopen(path, "r");
+    bool caught = false;
+    while (fp && fgets(line, sizeof line, fp))
+        if (strncmp(line, "SigCgt:", 7) == 0)
+            caught = (strtoull(line + 7, NULL, 16) >> (sig - 1) & 1) != 0;
+    if (fp)
+        fclose(fp);
+    return caught;
+}
+
+/* Starts program with its stderr in err_path, and sends it sig once it is
+ * ready for it (before_output) or once its first temporary file exists in
+ * dir: its status. */
+static int stop_with(const char *program, const char *const *args, int sig, bool before_output,
+                     const char *dir, const char *err_path)
+{
+    int err_fd = open(err_path, O_WRONLY | O_CREAT | O_TRUNC, 0666);
+    assert_true(err_fd >= 0);
+    pid_t pid = start_to(program, args, -1, err_fd);
+    close(err_fd);
+    int polls = 0;
+    while (!(before_output ? catches(pid, sig) : has_temporary(dir)) && polls++ < POLL_LIMIT) {
+        struct timespec t = {0, POLL_NS};
+        nanosleep(&t, NULL);
+    }
+    assert_true(polls < POLL_LIMIT);
+    kill(pid, sig);
+    return wait_status(pid);
+}
+
+/* A signal ends a run with one line that names it, status 128 + the signal,
+ * whether it comes while the run loads and draws or while it writes. */
+static void a_signal_stops_a_run_with_one_line(void **state)
+{
+    (void)state;
+    Path err = in_dir(test_dir("outputs_signal_line_err"), "stderr.txt");
+    struct {
+        const char *program;
+        int sig;
+        bool before_output;
+        const char *line;
+    } runs[] = {
+        {"10_fast_raster", SIGTERM, true, "10_fast_raster: error: stopped by SIGTERM\n"},
+        {"10_fast_raster", SIGINT, true, "10_fast_raster: error: stopped by SIGINT\n"},
+        {"02_zbuffer", SIGTERM, false, "02_zbuffer: error: stopped by SIGTERM\n"},
+        {"01_ybuffer", SIGTERM, true, "01_ybuffer: error: stopped by SIGTERM\n"},
+    };
+    for (size_t i = 0; i < sizeof runs / sizeof runs[0]; i++) {
+        const char *dir = test_dir("outputs_signal_line");
+        Path out = in_dir(dir, "out.png"), ids = in_dir(dir, "ids.png");
+        const char *args[] = {"--width", "2048", "--height", "2048", "--out", out.path,
+                              "--id-out", ids.path, NULL};
+        const char *row[] = {"--width", "2048", "--height", "2048", "--out", out.path, NULL};
+        const char *const *a = strcmp(runs[i].program, "01_ybuffer") == 0 ? row : args;
+        int status = stop_with(runs[i].program, a, runs[i].sig, runs[i].before_output, dir,
+                               err.path);
+        if (status == 0)
+            fail_msg("%s ended before signal %d arrived", runs[i].program, runs[i].sig);
+        expect_count(128 + runs[i].sig, status, "exit status");
+        char *text = read_text(err.path);
+        assert_string_equal(text, runs[i].line);
+        free(text);
+        if (entries(dir) != 0)
+            fail_msg("signal %d left %d files in %s", runs[i].sig, entries(dir), dir);
     }
 }
 
@@ -408,6 +489,39 @@ static void lost_standard_output_is_a_failure(void **state)
         assert_int_equal(wait_status(start(all[i], ascii, full)), 1);
     }
     close(full);
+    assert_int_equal(entries(dir), 0);
+}
+
+/* A reader that has gone (a pipe closed at its end, as `| head -c 10` leaves
+ * it): the write fails, one line says so, status 1, and no file of the run
+ * is published. It used to end the run silently, killed by SIGPIPE. */
+static void a_closed_pipe_is_a_failure_with_one_line(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("outputs_broken_pipe");
+    Path out = in_dir(dir, "out.png");
+    Path err = in_dir(test_dir("outputs_broken_pipe_err"), "stderr.txt");
+    int fds[2];
+    assert_int_equal(pipe(fds), 0);
+    close(fds[0]); /* nobody reads */
+    const char *to_stdout[] = {"--out", "-", "--width", "64", "--height", "48", NULL};
+    const char *summary[] = {"--out", out.path, "--width", "64", "--height", "48", NULL};
+    const char *const *args[] = {to_stdout, summary};
+    const char *programs[] = {"10_fast_raster", "02_zbuffer"};
+    for (int i = 0; i < 2; i++) {
+        int err_fd = open(err.path, O_WRONLY | O_CREAT | O_TRUNC, 0666);
+        assert_true(err_fd >= 0);
+        int status = wait_status(start_to(programs[i], args[i], fds[1], err_fd));
+        close(err_fd);
+        expect_count(1, status, "exit status");
+        char *text = read_text(err.path);
+        char want[TEXT_MAX];
+        snprintf(want, sizeof want, "%s: error: cannot write standard output: Broken pipe\n",
+                 programs[i]);
+        assert_string_equal(text, want);
+        free(text);
+    }
+    close(fds[1]);
     assert_int_equal(entries(dir), 0);
 }
 
@@ -536,11 +650,13 @@ int main(void)
         cmocka_unit_test(every_output_is_listed_in_the_summary),
         cmocka_unit_test(failed_output_leaves_no_output_of_the_run),
         cmocka_unit_test(signal_during_a_large_write_removes_the_temporary_files),
+        cmocka_unit_test(a_signal_stops_a_run_with_one_line),
         cmocka_unit_test(a_file_size_limit_is_a_failure_with_one_line),
         cmocka_unit_test(a_pipe_with_a_reader_gets_the_picture),
         cmocka_unit_test(pipes_are_refused_without_waiting),
         cmocka_unit_test(out_dash_writes_the_png_to_standard_output),
         cmocka_unit_test(lost_standard_output_is_a_failure),
+        cmocka_unit_test(a_closed_pipe_is_a_failure_with_one_line),
         cmocka_unit_test(compare_reader_refuses_bad_references),
         cmocka_unit_test(long_names_read_only_files_and_links),
         cmocka_unit_test(byte_order_marks_far_models_and_warnings),

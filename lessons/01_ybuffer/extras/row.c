@@ -158,6 +158,7 @@ static void print_written(const Options *opt, int count)
 
 int row_load(Row *row, int argc, char **argv)
 {
+    signals_begin(CLI.program); /* a signal from now on prints one line */
     memset(row, 0, sizeof *row);
     Options *opt = &row->opt;
     int status = cli_parse(&CLI, argc, argv, opt);
