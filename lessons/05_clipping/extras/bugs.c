@@ -30,6 +30,6 @@ static void draw_face_no_clip(Target *t, LessonState *s, const ScreenFace *f,
     free(v);
 }
 
-/* clips: render_faces hands it every face, as it would hand a GPU. */
+/* clips: render_faces hands it every face not wholly behind the near plane. */
 const Rasterizer NO_CLIP_BUG = {.clear = clear_depth, .draw_face = draw_face_no_clip,
                                 .stored_to_depth = stored_to_depth, .clips = true};
