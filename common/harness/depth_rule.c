@@ -8,6 +8,8 @@
 /* Six digits read well; nine always give back the same float (FLT_DECIMAL_DIG). */
 #define FEWEST_DIGITS 6
 #define ROUND_TRIP_DIGITS 9
+/* A float holds every integer below 2^24 exactly: a unorm code, in full. */
+#define EXACT_INTEGERS 16777216.0f
 
 bool rule_is_nearer(const DepthRule *rule, double a, double b)
 {
@@ -22,6 +24,10 @@ const char *format_stored(float v, char buf[STORED_TEXT_MAX])
     }
     if (isnan(v)) {
         snprintf(buf, STORED_TEXT_MAX, "nan");
+        return buf;
+    }
+    if (v == floorf(v) && fabsf(v) < EXACT_INTEGERS) { /* 16351140, not 1.635114e+07 */
+        snprintf(buf, STORED_TEXT_MAX, "%.0f", (double)v);
         return buf;
     }
     for (int digits = FEWEST_DIGITS; digits <= ROUND_TRIP_DIGITS; digits++) {

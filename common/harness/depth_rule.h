@@ -33,7 +33,8 @@ bool rule_is_nearer(const DepthRule *rule, double a, double b);
 /* A stored value as text, with the fewest significant digits (6 to 9) that
  * read back as the same float: 4.25 is "4.25", 1/5 is "0.2", but two values
  * that differ only in their last bits print differently, as a tie and a
- * near-tie must. Infinities print as "inf" and "-inf". */
+ * near-tie must. An integer below 2^24 (a unorm code) prints whole:
+ * 16351140, not 1.635114e+07. Infinities print as "inf" and "-inf". */
 const char *format_stored(float v, char buf[STORED_TEXT_MAX]);
 
 #endif

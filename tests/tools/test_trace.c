@@ -173,7 +173,9 @@ static void trace_shows_every_fragment_failing_in_the_clear_zero_bug(void **stat
  * 4.25 and 0.2f need few; 1/6 as a float is 0.16666667163..., and 0.166667
  * reads back as another float, so it takes 8 digits. The float just above 5.1f
  * (5.09999990463) is 5.10000038147: "5.1" and "5.100000" read back as 5.1f,
- * "5.1000004" as itself, so a near-tie never prints as a tie. */
+ * "5.1000004" as itself, so a near-tie never prints as a tie. A unorm code
+ * prints whole: 16351140 would read back from "1.635114e+07", but not to a
+ * reader comparing it with the codes beside it. */
 static void stored_values_print_with_the_fewest_digits_that_read_back(void **state)
 {
     (void)state;
@@ -183,6 +185,10 @@ static void stored_values_print_with_the_fewest_digits_that_read_back(void **sta
     assert_string_equal(format_stored(1.0f / 6.0f, buf), "0.16666667");
     assert_string_equal(format_stored(5.1f, buf), "5.1");
     assert_string_equal(format_stored(nextafterf(5.1f, 6.0f), buf), "5.1000004");
+    assert_string_equal(format_stored(16351140.0f, buf), "16351140");
+    assert_string_equal(format_stored(16777215.0f, buf), "16777215");
+    assert_string_equal(format_stored(1.0f, buf), "1");
+    assert_string_equal(format_stored(-0.0f, buf), "-0");
     assert_string_equal(format_stored(INFINITY, buf), "inf");
     assert_string_equal(format_stored(-INFINITY, buf), "-inf");
 }
