@@ -114,14 +114,15 @@ l05="$build/bin/05_clipping"
 echo "make-doc-images: 05_clipping done"
 
 # ---- 06_depth_precision: the ladder in unorm16, unorm24 and reversed
-# float32, and the precision plot at near 0.1, far 1000.
+# float32, labelled (each band's d, and a key), and the precision plot at
+# near 0.1, far 1000.
 make -s BUILD="$build" "$build/bin/06_depth_precision"
 l06="$build/bin/06_depth_precision"
-"$l06" --depth-format unorm16 --out "$images/06_ladder_unorm16.png" >/dev/null
-"$l06" --depth-format unorm24 --out "$images/06_ladder_unorm24.png" \
+"$l06" --depth-format unorm16 --out "$tmp_out" --ladder-out "$images/06_ladder_unorm16.png" >/dev/null
+"$l06" --depth-format unorm24 --out "$tmp_out" --ladder-out "$images/06_ladder_unorm24.png" \
        --precision-plot "$images/06_precision_plot.png" >/dev/null
-"$l06" --depth-format float32 --depth-mapping reversed \
-       --out "$images/06_ladder_float32_reversed.png" >/dev/null
+"$l06" --depth-format float32 --depth-mapping reversed --out "$tmp_out" \
+       --ladder-out "$images/06_ladder_float32_reversed.png" >/dev/null
 echo "make-doc-images: 06_depth_precision done"
 
 # ---- 07_depth_bias: the decals scene with no bias, units only, the

@@ -5,7 +5,7 @@
  * unorm24, float32) and a mapping (standard or reversed). Faces are clipped
  * as in lesson 05 (clip.c) and drawn by lesson 04's scanline (scanline.c),
  * both unchanged. What the lesson shows but does not teach (the flags' words,
- * --precision-plot, the ladder's score) is in extras/. */
+ * --precision-plot, the ladder's score and labels) is in extras/. */
 #include <stdio.h>
 
 #include "depth_format.h"

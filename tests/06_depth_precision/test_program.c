@@ -2,7 +2,8 @@
  * every format and mapping (its picture, and the fraction of each band where
  * the back plate wins, scored from --id-out as a GPU's picture would be),
  * agreement with lesson 05 at float32 on the other built-in scenes, the
- * precision plot, --far inf, the log mapping, and how it refuses bad input. */
+ * precision plot, the labelled ladder (--ladder-out), --far inf, the log
+ * mapping, and how it refuses bad input. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -193,6 +194,45 @@ static void precision_plot_of_a_tiny_near_plane_ends(void **state)
     image_free(&im);
 }
 
+/* --ladder-out: the picture of --out with each band's d beside its plates
+ * and a key in a band of 22 rows under it. At the ladder's camera every
+ * label lies on the background: no pixel of a plate changes. Only the
+ * ladder has bands to label. */
+static void ladder_out_labels_the_background_only(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("l06_ladder_out");
+    Path out = in_dir(dir, "x.png"), id = in_dir(dir, "id.png"), ladder = in_dir(dir, "l.png");
+    const char *args[] = {"--width", "400", "--height", "300", "--depth-format", "unorm16",
+                          "--out", out.path, "--id-out", id.path, "--ladder-out", ladder.path,
+                          NULL};
+    free(run_ok(PROGRAM, args));
+    Image plain = read_png(out.path), faces = read_png(id.path), labelled = read_png(ladder.path);
+    if (labelled.width != 400 || labelled.height != 300 + 22)
+        fail_msg("--ladder-out is %d x %d, wanted 400 x 322", labelled.width, labelled.height);
+    long labels = 0;
+    for (int y = 0; y < 300; y++)
+        for (int x = 0; x < 400; x++) {
+            Rgb a = image_get(&plain, x, y), b = image_get(&labelled, x, y);
+            Rgb f = image_get(&faces, x, y);
+            if (a.r == b.r && a.g == b.g && a.b == b.b)
+                continue;
+            labels++;
+            if (f.r || f.g || f.b)
+                fail_msg("--ladder-out: pixel (%d, %d), on a plate, differs from --out", x, y);
+        }
+    if (labels < 6 * 5 * 7) /* six labels of at least five glyphs' pixels */
+        fail_msg("--ladder-out: only %ld pixels differ from --out: no labels?", labels);
+    image_free(&plain);
+    image_free(&faces);
+    image_free(&labelled);
+    Path never = in_dir(dir, "never.png");
+    const char *cubes[] = {"--scene", "cubes", "--out", out.path, "--ladder-out", never.path,
+                           NULL};
+    expect_run_refused(PROGRAM, cubes, 2, "--ladder-out labels the ladder's bands: it needs "
+                                          "--scene ladder", never.path);
+}
+
 /* --far inf with reversed: z_w = n/d, and the ladder is as clean as at far 1000. */
 static void far_inf_with_reversed_float32(void **state)
 {
@@ -265,6 +305,7 @@ int main(void)
         cmocka_unit_test(float32_agrees_with_lesson_05_on_the_built_in_scenes),
         cmocka_unit_test(precision_plot_is_written),
         cmocka_unit_test(precision_plot_of_a_tiny_near_plane_ends),
+        cmocka_unit_test(ladder_out_labels_the_background_only),
         cmocka_unit_test(far_inf_with_reversed_float32),
         cmocka_unit_test(a_band_beyond_the_far_plane_is_not_drawn_and_says_so),
         cmocka_unit_test(bad_command_lines_are_refused_with_status_2),

@@ -1,5 +1,5 @@
 /* fuzz_flags_06_depth_precision.c: lesson 06's flags (--depth-format,
- * --depth-mapping, --precision-plot, and --far inf) with any arguments
+ * --depth-mapping, --precision-plot, --ladder-out, and --far inf) with any arguments
  * (make fuzz FUZZ=flags_06). Accepted, they give a format and a mapping
  * that exist, 0 < near < far, and a setup of finite numbers: z_w at near
  * is 0 (standard, log) or 1 (reversed), within rounding. See fuzz_flags.h. */

@@ -1,9 +1,9 @@
 /* test_legends.c: a picture with a legend band under it (harness/legend.h)
  * is as wide as its legend needs, whatever the size of the render.
  *
- * Lessons 08 and 09 write a heat map (--shade-count-out) and lesson 09 the
- * tile buffer (--hiz-out) and its skips (--skip-out), each with a band of
- * 22 rows under the picture.
+ * Lesson 06 writes the ladder labelled (--ladder-out), lessons 08 and 09 a
+ * heat map (--shade-count-out) and lesson 09 the tile buffer (--hiz-out)
+ * and its skips (--skip-out), each with a band of 22 rows under the picture.
  * At 8 x 8 pixels the legend used to be drawn past the end of the image's
  * rows (a heap overflow) and, up to a width of about 240, over the picture.
  * Now, for each:
@@ -37,6 +37,7 @@ typedef struct {
 } LegendOutput;
 
 static const LegendOutput OUTPUTS[] = {
+    {"06_depth_precision", "--ladder-out"},
     {"08_early_z", "--shade-count-out"},
     {"09_hierarchical_z", "--shade-count-out"},
     {"09_hierarchical_z", "--hiz-out"},

@@ -201,10 +201,11 @@ static void every_output_is_listed_in_the_summary(void **state)
     const char *dir = test_dir("outputs_listed");
     Path out = in_dir(dir, "out.png"), colour = in_dir(dir, "colour.png"),
          heat = in_dir(dir, "heat.png"), hiz = in_dir(dir, "hiz.png"),
-         plot = in_dir(dir, "plot.png");
+         plot = in_dir(dir, "plot.png"), ladder = in_dir(dir, "ladder.png");
     struct { const char *lesson, *flag; const Path *path; } runs[] = {
         {"08_early_z", "--colour-out", &colour}, {"08_early_z", "--shade-count-out", &heat},
         {"09_hierarchical_z", "--hiz-out", &hiz}, {"06_depth_precision", "--precision-plot", &plot},
+        {"06_depth_precision", "--ladder-out", &ladder},
     };
     for (size_t k = 0; k < sizeof runs / sizeof runs[0]; k++) {
         const char *args[] = {"--width", "40", "--height", "30", "--out", out.path,

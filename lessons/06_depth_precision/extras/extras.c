@@ -7,10 +7,11 @@
 
 #include "harness/compare_naive.h"
 #include "harness/ladder.h"
+#include "ladder_picture.h"
 #include "plot.h"
 #include "state.h"
 
-enum { FLAG_FORMAT, FLAG_MAPPING, FLAG_PLOT, FLAG_COUNT };
+enum { FLAG_FORMAT, FLAG_MAPPING, FLAG_PLOT, FLAG_LADDER_OUT, FLAG_COUNT };
 
 static const LessonFlag FLAGS[FLAG_COUNT] = {
     [FLAG_FORMAT] = {"--depth-format", "F", "what the depth buffer stores: unorm16, unorm24 "
@@ -21,6 +22,10 @@ static const LessonFlag FLAGS[FLAG_COUNT] = {
     [FLAG_PLOT] = {"--precision-plot", "FILE.png",
                    "also draw the depth step against distance, every format and mapping",
                    .output = true},
+    [FLAG_LADDER_OUT] = {"--ladder-out", "FILE.png",
+                         "on the ladder: the picture with each band's d and a key (the back "
+                         "plate's colour: a failure)",
+                         .output = true},
 };
 
 
@@ -50,11 +55,18 @@ static void note_ladder_bands(Run *run)
     run_note(run, "%s", line);
 }
 
+static bool on_the_ladder(const Run *run)
+{
+    return run->opt.scene && strcmp(run->opt.scene, "ladder") == 0;
+}
+
 static bool after_write(Run *run, Error *err)
 {
-    const char *plot = run->opt.extra[FLAG_PLOT];
-    if (run->opt.scene && strcmp(run->opt.scene, "ladder") == 0)
+    const char *plot = run->opt.extra[FLAG_PLOT], *ladder = run->opt.extra[FLAG_LADDER_OUT];
+    if (on_the_ladder(run))
         note_ladder_bands(run);
+    if (ladder && !write_ladder_picture(&run->render, &run->target, run->rz, ladder, err))
+        return false;
     if (!plot)
         return true;
     const DepthSetup *s = &run->rz->state->depth;
@@ -66,6 +78,8 @@ static bool choose(Run *run, Error *err)
     if (!depth_flags_ok(run, run->opt.extra[FLAG_FORMAT], run->opt.extra[FLAG_MAPPING], true,
                         err))
         return false;
+    if (run->opt.extra[FLAG_LADDER_OUT] && !on_the_ladder(run))
+        return error_set(err, "--ladder-out labels the ladder's bands: it needs --scene ladder");
     run->after_write = after_write;
     return true;
 }
