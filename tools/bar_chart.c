@@ -166,6 +166,7 @@ static void draw_chart(Image *im, const Chart *c, const char *y_label)
 
 int main(int argc, char **argv)
 {
+    signals_begin(PROGRAM); /* a signal from now on prints one line */
     if (argc == 2 && strcmp(argv[1], "--help") == 0) {
         printf("usage: " PROGRAM " IN.csv OUT.png \"Y AXIS LABEL\"\n"
                "Draws IN.csv (a header 'group,series,...', then 'label,number,...' lines)\n"

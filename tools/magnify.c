@@ -66,6 +66,7 @@ static Rgb magnified_pixel(const Image *in, int scale, int x, int y, double (*se
 
 int main(int argc, char **argv)
 {
+    signals_begin(PROGRAM); /* a signal from now on prints one line */
     if (argc >= 2 && strcmp(argv[1], "--help") == 0) {
         printf("usage: " PROGRAM " IN.png OUT.png SCALE [X0,Y0,X1,Y1 ...]\n"
                "Scales a picture up with pixel borders, centre dots and segments.\n");

@@ -12,6 +12,7 @@
 #include <string.h>
 
 #include "error.h"
+#include "harness/file.h"
 #include "harness/mesh_build.h"
 #include "harness/scene.h"
 
@@ -62,6 +63,7 @@ static bool parse_count(const char *s, long lo, long hi, int *out)
 
 int main(int argc, char **argv)
 {
+    signals_begin(PROGRAM); /* a signal from now on prints one line */
     if (argc == 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
         usage(stdout);
         return EXIT_OK;

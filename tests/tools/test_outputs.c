@@ -522,6 +522,16 @@ static void a_closed_pipe_is_a_failure_with_one_line(void **state)
         assert_string_equal(text, want);
         free(text);
     }
+    /* A tool as well (build/tools/, beside build/bin/): make_obj's model into the pipe. */
+    const char *model[] = {"knot", "/dev/stdout", NULL};
+    int err_fd = open(err.path, O_WRONLY | O_CREAT | O_TRUNC, 0666);
+    assert_true(err_fd >= 0);
+    int status = wait_status(start_to("../tools/make_obj", model, fds[1], err_fd));
+    close(err_fd);
+    expect_count(1, status, "make_obj's exit status");
+    char *text = read_text(err.path);
+    assert_string_equal(text, "make_obj: error: cannot write /dev/stdout: Broken pipe\n");
+    free(text);
     close(fds[1]);
     assert_int_equal(entries(dir), 0);
 }
