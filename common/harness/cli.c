@@ -757,7 +757,12 @@ static void fill_camera(Options *o, const SceneInfo *scene)
 
 bool cli_resolve_camera(Options *opt, const SceneInfo *scene, Error *err)
 {
+    bool near_alone = opt->near_set && !opt->far_set;
     fill_camera(opt, scene);
+    /* --near alone past the scene's or the model's far plane: named, not --far. */
+    if (near_alone && opt->near > 0 && !(opt->far > opt->near))
+        return error_set(err, "--near: %g is out of range (not before the far plane of the "
+                              "scene or model, %g: give --far too)", opt->near, opt->far);
     return camera_check(opt->eye, opt->target, opt->up, opt->fovy, opt->near, opt->far,
                         opt->width, opt->height, err);
 }

@@ -75,6 +75,18 @@ static void a_near_plane_past_the_stand_in_for_far_inf_is_named(void **state)
         }
 }
 
+/* --near alone past the far plane the scene gave: the message names --near,
+ * which was given, not --far, which was not. */
+static void one_plane_past_the_scenes_other_is_named(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("one_plane");
+    Path out = in_dir(dir, "out.png");
+    const char *near_args[] = {"--scene", "triangles3", "--near", "1e6", "--out", out.path, NULL};
+    expect_run_refused("05_clipping", near_args, 2, "--near: 1e+06 is out of range (not before "
+                       "the far plane of the scene or model, 100: give --far too)", out.path);
+}
+
 /* A cube 2 units wide at the origin. From inside it the face at z = -1
  * (face 0) fills the view; from 20 units away the face at z = +1 (face 1)
  * shows at the centre, and the corners are background. */
@@ -111,6 +123,7 @@ int main(void)
         cmocka_unit_test(a_far_plane_of_1e30_is_finite_in_the_standard_mapping),
         cmocka_unit_test(a_near_plane_past_the_stand_in_for_far_inf_is_named),
         cmocka_unit_test(planes_are_fitted_to_the_eye_given),
+        cmocka_unit_test(one_plane_past_the_scenes_other_is_named),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
