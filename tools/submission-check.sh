@@ -7,16 +7,17 @@
 #       from the teacher's solution, built in BUILD: DIR/taught (the lesson's
 #       files with a solution region), DIR/defines (each taught object's
 #       global names), DIR/calls (the names a submission may call), DIR/taken
-#       (the names the C library and the tests define), DIR/<file>.directives
+#       (the names the tests call or define), DIR/<file>.directives
 #       (each taught header's preprocessor lines)
 #   sh tools/submission-check.sh check BUILD LESSON DIR
 #       the student's build against them: one line per thing refused on
 #       stdout, and status 1 if there is one; 0 and nothing if all is well
 #
 # A taught file of the submission may not
-#   - define a global name the C library or the tests define (printf,
-#     _assert_true, ...), nor one that begins with an underscore: the test
-#     program would take it in place of theirs;
+#   - define a global name that the test program or a library it loads
+#     calls from a shared library (vsnprintf, malloc, write, ...) or that the
+#     tests define (observed_int_equal), nor one that begins with an
+#     underscore: the test program would take it in place of theirs;
 #   - call what the teacher's solution does not, but for the functions of
 #     the lesson's own files and of common/, the C library's mathematics,
 #     memory, strings and printing (FUNCTIONS below): no open, write, fork,
@@ -123,14 +124,18 @@ if [ "$what" = record ]; then
     printf '%s\n' $FUNCTIONS >>"$dir/calls.new"
     sort -u "$dir/calls.new" >"$dir/calls" && rm -f "$dir/calls.new"
     sort -u "$dir/calls" "$dir/tests.calls.new" >"$dir/tests.calls" && rm -f "$dir/tests.calls.new"
-    # The names taken: the shared libraries of the lesson's test programs,
-    # and every object of the tests.
+    # The names taken: what the lesson's test programs and the libraries
+    # they load (but the C library's own) call from a shared library, which
+    # a name of the program's would replace; and every name the tests'
+    # objects define.
     {
         for t in "$build/tests/$lesson"/test_*; do
             [ -x "$t" ] || continue
-            ldd "$t" 2>/dev/null | awk '$3 ~ /^\// { print $3 } $1 ~ /^\// { print $1 }'
-        done | sort -u | while read -r lib; do
-            nm -D --defined-only --format=posix "$lib" 2>/dev/null | awk '{ sub(/@.*/, "", $1); print $1 }'
+            echo "$t"
+            ldd "$t" 2>/dev/null | awk '$3 ~ /^\// { print $3 } $1 ~ /^\// { print $1 }' |
+                grep -vE '/(libc|ld-linux[^/]*)\.so'
+        done | sort -u | while read -r f; do
+            nm -D --undefined-only --format=posix "$f" 2>/dev/null | awk '{ sub(/@.*/, "", $1); print $1 }'
         done
         find "$build/obj/tests" -name '*.o' 2>/dev/null | while read -r o; do defined "$o"; done
     } | sort -u >"$dir/taken"
@@ -168,7 +173,7 @@ while read -r f; do
             case $name in
                 _*) refuse "$f" "defines $name, a name that begins with an underscore: rename it or make it static" ;;
                 *) if grep -qxF "$name" "$dir/taken"; then
-                       refuse "$f" "defines $name, a name of the C library or of the tests: rename it or make it static"
+                       refuse "$f" "defines $name, a name the tests or the C library use: rename it or make it static"
                    fi ;;
             esac
         done

@@ -193,9 +193,9 @@ static const char SUM_RECORDS_BEFORE_MAIN_C[] =
     "int sum_to(int n) { (void)n; return 0; }\n";
 static const char SUM_WITH_A_HELPER_C[] =
     "#include \"sum.h\"\n#include <stdio.h>\n"
-    "int sum_helper(int n);\n"
-    "int sum_helper(int n) { printf(\"n = %d\\n\", n); return n * (n + 1) / 2; }\n"
-    "int sum_to(int n) { return sum_helper(n); }\n";
+    "int advance(int n);\n"
+    "int advance(int n) { printf(\"n = %d\\n\", n); return n * (n + 1) / 2; }\n"
+    "int sum_to(int n) { return advance(n); }\n";
 static const char SUM_BUGGY_C[] =
     "#include \"sum.h\"\nint sum_to(int n) { return n <= 10 ? n * (n + 1) / 2 : 0; }\n";
 
@@ -639,7 +639,7 @@ static void a_judged_lesson_cannot_be_forged(void **state)
     expect_judged_score(SUM_NEUTERS_CMOCKA_C, "0/5");
     expect_judged_score(SUM_WRITES_RECORD_C, "0/5");
     expect_judged_score(SUM_REDEFINES_OBSERVER_C, "0/5");
-    expect_not_judged(SUM_REPLACES_PRINTF_C, "defines vsnprintf, a name of the C library");
+    expect_not_judged(SUM_REPLACES_PRINTF_C, "defines vsnprintf, a name the tests or the C library use");
     expect_not_judged(SUM_RECORDS_BEFORE_MAIN_C, "runs code before main");
     expect_not_judged(SUM_RECORDS_BEFORE_MAIN_C, "calls write");
     expect_not_judged(SUM_REDEFINES_OBSERVER_C, "defines observed_int_equal");
