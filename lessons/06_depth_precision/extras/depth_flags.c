@@ -2,8 +2,6 @@
 #include "depth_flags.h"
 
 #include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
 static const char *const FORMAT_NAMES[] = {[UNORM16] = "unorm16", [UNORM24] = "unorm24",
@@ -25,16 +23,6 @@ const char *format_name(DepthFormat format)
 const char *mapping_name(DepthMapping mapping)
 {
     return MAPPING_NAMES[mapping];
-}
-
-/* Shortest of %.15g / %.17g that reads back as v, as camera.c prints
- * --near and --far. */
-static const char *number_text(double v, char buf[32])
-{
-    snprintf(buf, 32, "%.15g", v);
-    if (strtod(buf, NULL) != v)
-        snprintf(buf, 32, "%.17g", v);
-    return buf;
 }
 
 /* The index of name in names[0 .. n-1], or -1. */
@@ -60,15 +48,13 @@ bool depth_flags_ok(Run *run, const char *format, const char *mapping, bool log_
                               "has no plane to offset or to test early; here standard or reversed");
     bool reversed = mapping && strcmp(mapping, "reversed") == 0;
     if (isinf(run->opt.far)) {
-        char a[32], b[32];
         if (!reversed)
             return error_set(err, "--far inf needs --depth-mapping reversed (standard divides "
                                   "by far - near, log by log(far / near))");
         /* The stand-in must lie beyond near, or the camera would blame --far. */
         if (run->opt.near_set && !(run->opt.near < FAR_AT_INFINITY))
-            return error_set(err, "--near: %s is out of range: with --far inf, near must be "
-                                  "below %s", number_text(run->opt.near, a),
-                             number_text(FAR_AT_INFINITY, b));
+            return error_set(err, "--near: %g is out of range: with --far inf, near must be "
+                                  "below %g", run->opt.near, FAR_AT_INFINITY);
         run->opt.far = FAR_AT_INFINITY;
     }
     if (reversed)
