@@ -80,11 +80,13 @@ syscalls() {
     objdump -d --no-show-raw-insn "$1" 2>/dev/null |
         grep -qE '[[:space:]](syscall|sysenter|svc)([[:space:]]|$)|int[[:space:]]+\$0x80'
 }
-# How many times each word that reaches past C occurs in a source: inline
+# How many times each word that reaches past C occurs in a source's code: inline
 # assembly; in a header (compiled into the tests), attributes and pragmas too.
 words() {
     case $1 in *.h) w='asm|__asm|__asm__|__attribute__|_Pragma' ;; *) w='asm|__asm|__asm__' ;; esac
-    grep -oE "\\b($w)\\b" "$1" 2>/dev/null | sort | uniq -c | awk '{ print $2, $1 }'
+    # comments out (the preprocessor's own reading, no macro expanded)
+    ${CC:-cc} -fpreprocessed -dD -E -P -x c "$1" 2>/dev/null | grep -oE "\\b($w)\\b" |
+        sort | uniq -c | awk '{ print $2, $1 }'
 }
 
 if [ "$what" = record ]; then
