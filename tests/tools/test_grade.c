@@ -112,7 +112,15 @@ static const char POINTS[] =
  * lesson's do), for make grade-reference and make grade REFERENCE=. Its
  * tests include test_support.h, as the series' do: their checks are
  * observed (tests/support/observe.h). */
-static const char SUM_H[] = "int sum_to(int n);\n";
+/* Its header is taught too, as lesson 03's raster.h is: a macro in a
+ * solution region (which sum.c does not need), for the rules on headers. */
+static const char SUM_H[] = "/* SOLUTION BEGIN: where sums start */\n"
+                            "#define SUM_FIRST 1\n"
+                            "/* SOLUTION STUB\n"
+                            "#define SUM_FIRST 0\n"
+                            "*/\n"
+                            "/* SOLUTION END */\n"
+                            "int sum_to(int n);\n";
 static const char SUM_C[] =
     "#include \"sum.h\"\n"
     "/* 1 + 2 + ... + n. */\n"
@@ -270,6 +278,7 @@ static int restore_tree(void **state)
     write_text(path_join(tree, "lessons/09_fake/fake.c"), FAKE_C);
     write_text(path_join(tree, "tests/09_fake/points.txt"), POINTS);
     write_text(path_join(tree, "lessons/06_sum/sum.c"), SUM_C);
+    write_text(path_join(tree, "lessons/06_sum/sum.h"), SUM_H);
     remove(path_join(tree, "tests/09_fake/notes.txt"));
     return 0;
 }
@@ -622,6 +631,44 @@ static void expect_not_judged(const char *sum_c, const char *why)
     shell_result_free(&r);
 }
 
+/* The same, for a header of the submission (with the teacher's sum.c):
+ * want_score its score line, or NULL and why it is not judged. */
+static void expect_header(const char *sum_h, const char *want_score, const char *why)
+{
+    write_text(path_join(tree, "lessons/06_sum/sum.h"), sum_h);
+    ShellResult r = run_shell(tree, SHELL_TIMEOUT,
+                              "make -j2 OPT=-O0 grade LESSON=06 TIME_LIMIT=5 REFERENCE=build/ref");
+    write_text(path_join(tree, "lessons/06_sum/sum.h"), SUM_H);
+    bool ok = r.status == 0 && (want_score ? strstr(r.output, want_score) != NULL
+                                           : strstr(r.output, "06_sum: 0/5") &&
+                                                 strstr(r.output, "is not judged") &&
+                                                 strstr(r.output, why));
+    if (!ok)
+        fail_msg("header:\n%swant %s (status %d):\n%s", sum_h, want_score ? want_score : why,
+                 r.status, r.output);
+    shell_result_free(&r);
+}
+
+/* A header is compiled into the tests: it may give the teacher's macro any
+ * value and include a standard header, and nothing more. */
+static const char SUM_H_WRITTEN_OTHERWISE[] =
+    "#include <math.h>\n#include <stdio.h>\n"
+    "#define SUM_FIRST (1) /* the first term */\n"
+    "int sum_to(int n); // 1 + ... + n\n";
+static const char SUM_H_REDEFINES_A_CHECK[] =
+    "#define SUM_FIRST 1\n#define assert_int_equal(a, b) ((void)(a), (void)(b))\n"
+    "int sum_to(int n);\n";
+static const char SUM_H_INCLUDES_A_FILE[] =
+    "#define SUM_FIRST 1\n#include \"../../tests/support/observe.h\"\n"
+    "int sum_to(int n);\n";
+static const char SUM_H_WITH_A_CONSTRUCTOR[] =
+    "#define SUM_FIRST 1\nint sum_to(int n);\n"
+    "__attribute__((constructor)) static void early(void) {}\n";
+static const char SUM_H_WITH_CODE[] =
+    "#define SUM_FIRST 1\nint sum_to(int n);\n"
+    "static inline int quiet(void) { return 0; }\n"
+    "#define main(...) main(__VA_ARGS__) { return quiet(); } int unused(void)\n";
+
 /* The teacher's record made once, then each submission judged against it:
  * the solution scores all, the stub what needs no work, a bug what it gets
  * right, and no forgery more than the stub. */
@@ -645,6 +692,11 @@ static void a_judged_lesson_cannot_be_forged(void **state)
     expect_not_judged(SUM_REDEFINES_OBSERVER_C, "defines observed_int_equal");
     expect_not_judged(SUM_NEUTERS_CMOCKA_C, "begins with an underscore");
     expect_judged_score(SUM_WITH_A_HELPER_C, "5/5");
+    expect_header(SUM_H_WRITTEN_OTHERWISE, "06_sum: 5/5", NULL);
+    expect_header(SUM_H_REDEFINES_A_CHECK, NULL, "has the line '#define assert_int_equal'");
+    expect_header(SUM_H_INCLUDES_A_FILE, NULL, "has the line '#include \"../../tests/support/observe.h\"'");
+    expect_header(SUM_H_WITH_A_CONSTRUCTOR, NULL, "uses __attribute__");
+    expect_header(SUM_H_WITH_CODE, NULL, "has the line '#define main");
 
     /* The judge's words reach the student. */
     write_text(path_join(tree, "lessons/06_sum/sum.c"), SUM_BUGGY_C);
