@@ -1,5 +1,5 @@
 /* extras.h: what lesson 03 shows but does not teach, and does not hand on to
- * lesson 04 (docs/03_perspective_z.md, "Extras"):
+ * lesson 04 (docs/03_perspective_z.md, its start):
  *
  *   --depth-interp naive     draw with lesson 02's rule, d linear (naive.c)
  *   --compare-naive FILE     draw with both rules, mark where they differ
