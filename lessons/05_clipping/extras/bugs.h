@@ -4,8 +4,10 @@
  *          behind the eye (w_c < 0) lands on the other side of the screen
  *          centre, mirrored through it, and one just behind the eye (w_c
  *          near 0) lands very far away: a face that reaches behind the eye
- *          is stretched across the screen, and a face wholly behind it is
- *          drawn mirrored, as if it were in front. The rasterizer is handed
+ *          is stretched across the screen. (A face wholly behind the near
+ *          plane is still dropped by render_faces, as for any rasterizer
+ *          that clips; handed over, it would be drawn mirrored, as if it
+ *          were in front: the page's exercise 4.) The rasterizer is handed
  *          |w_c| as the depth (its 1/d must be positive to be drawn at all);
  *          a corner exactly at w_c = 0 divides to infinity, and its face is
  *          not drawn. */
