@@ -20,7 +20,8 @@
  * The diff is counted here from the output of tools/lesson-diff.sh, file by
  * file, and must agree with what `make reading` prints. Each lesson page names
  * its reading path, in order, under "## Reading the code"; the diffs a page
- * links (docs/diffs/) are today's, and the page names each file they change. */
+ * links (docs/diffs/) are today's, and the page names each file they change.
+ * docs/conventions.md's table of the layout quotes today's measures. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -343,6 +344,75 @@ static void every_page_names_each_file_its_diff_changes(void **state)
     }
 }
 
+/* n as the pages write it: 1,541 (a comma every three digits). */
+static const char *with_commas(int n, char out[32])
+{
+    char digits[24];
+    int len = snprintf(digits, sizeof digits, "%d", n), o = 0;
+    for (int i = 0; i < len; i++) {
+        if (i > 0 && (len - i) % 3 == 0)
+            out[o++] = ',';
+        out[o++] = digits[i];
+    }
+    out[o] = '\0';
+    return out;
+}
+
+/* docs/conventions.md's table of "before this layout and now": its "now"
+ * columns are what `make reading` prints today, for every lesson it lists. */
+static void conventions_table_is_what_make_reading_prints(void **state)
+{
+    (void)state;
+    Reading r[MAX_LESSONS];
+    int n = read_readings(r);
+    char *text = read_text("docs/conventions.md");
+    char *table = strstr(text, "Measured with `make reading`");
+    if (!table)
+        fail_msg("docs/conventions.md has no table measured with `make reading`");
+    int rows = 0;
+    for (char *line = strstr(table, "\n| 0"); line; line = strstr(line + 1, "\n| 0")) {
+        char row[512], *eol = strchr(line + 1, '\n');
+        snprintf(row, sizeof row, "%.*s", (int)(eol ? eol - line - 1 : (long)strlen(line + 1)), line + 1);
+        char *cell[12], *save = NULL;
+        int cells = 0;
+        for (char *c = strtok_r(row, "|", &save); c && cells < 12; c = strtok_r(NULL, "|", &save)) {
+            while (*c == ' ')
+                c++;
+            for (char *e = c + strlen(c); e > c && e[-1] == ' ';)
+                *--e = '\0';
+            cell[cells++] = c;
+        }
+        if (cells < 8)
+            fail_msg("docs/conventions.md: a row of the reading table has %d cells", cells);
+        int k = 0;
+        while (k < n && strncmp(r[k].name, cell[0], 2) != 0)
+            k++;
+        if (k == n)
+            fail_msg("docs/conventions.md: the reading table has lesson %s, make reading has not", cell[0]);
+        char want[96], a[32], b[32];
+        snprintf(want, sizeof want, "%d files, %s lines", r[k].files, with_commas(r[k].path_lines, a));
+        if (strcmp(cell[2], want) != 0)
+            fail_msg("docs/conventions.md, lesson %s: the reading path is \"%s\", make reading "
+                     "prints %s", cell[0], cell[2], want);
+        expect_count(r[k].main_lines, atoi(cell[4]), what("main.c of lesson %s in conventions.md", cell[0]));
+        expect_count(r[k].solution_lines, atoi(cell[6]),
+                     what("solution lines of lesson %s in conventions.md", cell[0]));
+        if (cells > 8 && cell[8][0] && r[k].diff_lines >= 0) { /* (an empty cell quotes nothing) */
+            if (r[k].replacing_lines > 0)
+                snprintf(want, sizeof want, "%s (+ %s shown whole)", with_commas(r[k].diff_lines, a),
+                         with_commas(r[k].replacing_lines, b));
+            else
+                snprintf(want, sizeof want, "%s", with_commas(r[k].diff_lines, a));
+            if (strcmp(cell[8], want) != 0)
+                fail_msg("docs/conventions.md, lesson %s: the diff to the next is \"%s\", make "
+                         "reading prints %s", cell[0], cell[8], want);
+        }
+        rows++;
+    }
+    expect_at_least(4, rows, "rows of the reading table in docs/conventions.md");
+    free(text);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -351,6 +421,7 @@ int main(void)
         cmocka_unit_test(every_page_names_its_reading_path_in_order),
         cmocka_unit_test(linked_diffs_in_docs_are_the_diffs_of_the_code),
         cmocka_unit_test(every_page_names_each_file_its_diff_changes),
+        cmocka_unit_test(conventions_table_is_what_make_reading_prints),
     };
     return cmocka_run_group_tests_name("tools: reading paths and lesson diffs", tests, NULL,
                                        NULL);
