@@ -223,6 +223,11 @@ void output_set_begin(void)
     staging = true;
 }
 
+bool output_set_open(void)
+{
+    return staging;
+}
+
 static bool add_pending(char *tmp_path, char *path)
 {
     if (pending_count == pending_cap) {

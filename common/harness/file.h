@@ -91,6 +91,9 @@ bool output_dir_check(const char *dir, Error *err);
 void output_set_begin(void);
 bool output_set_publish(Error *err);
 void output_set_abort(void);
+/* Whether a set is open (between begin and publish or abort): a function
+ * that writes several files opens its own set only when none is. */
+bool output_set_open(void);
 
 /* Every temporary file that exists is listed; SIGINT, SIGTERM, SIGHUP and
  * the other signals that end a program (file.c's list) remove them all (and

@@ -69,7 +69,9 @@ bool mesh_parse_obj(Mesh *m, const char *text, size_t len, const char *name,
                     const char *mtl_dir, Error *err);
 /* Writes v and f lines (1-based), o and g lines where a face's names change
  * and, when there are materials, usemtl lines and a .mtl file beside it (path
- * with .obj replaced by .mtl), both atomically. */
+ * with .obj replaced by .mtl), both atomically and as one output set: a
+ * failure publishes neither, and a .mtl that is the OBJ file under another
+ * name is refused. */
 bool mesh_write_obj(const Mesh *m, const char *path, Error *err);
 
 /* Newell's normal of a polygon (not normalised; zero for a degenerate one). */

@@ -786,27 +786,14 @@ static bool write_mtl(const Mesh *m, const char *mtl_path, Error *err)
     return atomic_commit(&f, err);
 }
 
-bool mesh_write_obj(const Mesh *m, const char *path, Error *err)
+static bool write_obj(const Mesh *m, const char *path, const char *mtl_path, Error *err)
 {
-    char *mtl_path = NULL;
-    if (m->nmaterials > 0) {
-        mtl_path = mtl_path_for(path);
-        if (!mtl_path)
-            return error_set(err, "out of memory");
-        if (!write_mtl(m, mtl_path, err)) {
-            free(mtl_path);
-            return false;
-        }
-    }
     AtomicFile f;
-    if (!atomic_open(&f, path, err)) {
-        free(mtl_path);
+    if (!atomic_open(&f, path, err))
         return false;
-    }
     fprintf(f.fp, "# %d vertices, %d faces\n", m->nverts, m->nfaces);
     if (mtl_path)
         fprintf(f.fp, "mtllib %s\n", base_name(mtl_path));
-    free(mtl_path);
     for (int i = 0; i < m->nverts; i++) {
         fputc('v', f.fp);
         write_double(f.fp, m->verts[i].x);
@@ -832,4 +819,36 @@ bool mesh_write_obj(const Mesh *m, const char *path, Error *err)
         fputc('\n', f.fp);
     }
     return atomic_commit(&f, err);
+}
+
+/* The .mtl and the OBJ are one output set: both are published, or neither
+ * (a failed OBJ leaves no new .mtl, and an existing one keeps its bytes). A
+ * .mtl that is the OBJ under another name (a link) is refused: one file
+ * cannot hold both. */
+bool mesh_write_obj(const Mesh *m, const char *path, Error *err)
+{
+    char *mtl_path = NULL;
+    if (m->nmaterials > 0) {
+        mtl_path = mtl_path_for(path);
+        if (!mtl_path)
+            return error_set(err, "out of memory");
+        if (same_file(mtl_path, path)) {
+            error_set(err, "cannot write %s: its material library %s is the same file", path,
+                      mtl_path);
+            free(mtl_path);
+            return false;
+        }
+    }
+    bool own_set = !output_set_open();
+    if (own_set)
+        output_set_begin();
+    bool ok = (!mtl_path || write_mtl(m, mtl_path, err)) && write_obj(m, path, mtl_path, err);
+    free(mtl_path);
+    if (own_set) {
+        if (ok)
+            ok = output_set_publish(err);
+        else
+            output_set_abort();
+    }
+    return ok;
 }

@@ -14,6 +14,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "harness/file.h"
 #include "harness/mesh_build.h"
@@ -661,6 +663,62 @@ static void write_to_a_missing_directory_fails_cleanly(void **state)
     mesh_free(&m);
 }
 
+
+/* The file at path holds exactly text. */
+static void expect_text(const char *path, const char *text)
+{
+    char *got = read_text(path);
+    assert_string_equal(got, text);
+    free(got);
+}
+
+/* The .mtl and the OBJ are published together: an OBJ that cannot be
+ * written leaves no new .mtl and an existing one as it was, and a .mtl that
+ * is the OBJ under another name (a link) is refused, the OBJ kept. */
+static void obj_and_mtl_are_written_both_or_neither(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("mesh_write_both_or_neither");
+    char obj[512], mtl[512];
+    Mesh m;
+    Error err = {""};
+    mesh_init(&m);
+    const Vec3 p[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    for (int i = 0; i < 3; i++)
+        mesh_add_vertex(&m, p[i], &err);
+    int red = mesh_add_material(&m, "red", vec3(1, 0, 0), &err);
+    const int tri[3] = {0, 1, 2};
+    assert_int_equal(mesh_add_face(&m, tri, 3, red, &err), 0);
+
+    /* The OBJ is a directory: no .mtl appears. */
+    snprintf(obj, sizeof obj, "%s", path_join(dir, "d.obj"));
+    snprintf(mtl, sizeof mtl, "%s", path_join(dir, "d.mtl"));
+    assert_int_equal(mkdir(obj, 0755), 0);
+    assert_false(mesh_write_obj(&m, obj, &err));
+    assert_non_null(strstr(err.msg, "d.obj"));
+    assert_false(file_exists(mtl));
+
+    /* The OBJ is read-only: the .mtl beside it keeps its bytes. */
+    snprintf(obj, sizeof obj, "%s", path_join(dir, "ro.obj"));
+    snprintf(mtl, sizeof mtl, "%s", path_join(dir, "ro.mtl"));
+    write_text(obj, "read-only\n");
+    assert_int_equal(chmod(obj, 0444), 0);
+    write_text(mtl, "precious\n");
+    assert_false(mesh_write_obj(&m, obj, &err));
+    expect_text(mtl, "precious\n");
+
+    /* The .mtl is a link to the OBJ: refused, the OBJ as it was. */
+    snprintf(obj, sizeof obj, "%s", path_join(dir, "x.obj"));
+    snprintf(mtl, sizeof mtl, "%s", path_join(dir, "x.mtl"));
+    write_text(obj, "old\n");
+    assert_int_equal(symlink("x.obj", mtl), 0);
+    err.msg[0] = '\0';
+    assert_false(mesh_write_obj(&m, obj, &err));
+    assert_non_null(strstr(err.msg, "is the same file"));
+    expect_text(obj, "old\n");
+    mesh_free(&m);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -700,6 +758,7 @@ int main(void)
         cmocka_unit_test(write_then_read_gives_the_same_mesh),
         cmocka_unit_test(mesh_without_materials_writes_no_mtl),
         cmocka_unit_test(write_to_a_missing_directory_fails_cleanly),
+        cmocka_unit_test(obj_and_mtl_are_written_both_or_neither),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
