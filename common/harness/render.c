@@ -17,6 +17,7 @@
 #define FIT_FAR_FACTOR 1.5     /* far: well behind the sphere's back */
 #define FIT_BACK_OFF_STEPS 2100 /* doublings: enough to span every double */
 #define FIT_INSIDE_NEAR 1e-3   /* near for an eye inside the sphere: this much of its radius */
+#define FAR_MODEL_RATIO 1048576.0 /* 2^20: see model_origin */
 
 static void render_clear(Render *r)
 {
@@ -74,14 +75,42 @@ static void scene_names(char *buf, size_t size)
 }
 
 static void fit_planes_to_eye(const Mesh *m, Vec3 eye, SceneInfo *s); /* below */
+static void fit_sphere(const Mesh *m, Vec3 *centre, double *radius); /* below */
 
-/* Fills r->mesh from --obj or --scene and tells which camera frames it. */
-static int load_mesh(Render *r, const Options *opt, SceneInfo *framing, Error *err)
+/* Where a model is drawn from. Doubles near 1e17 are 16 apart: a camera
+ * fitted to a small model there cannot stand near it (its eye rounds into
+ * the plane of the model's faces, or onto the model), and look_at's
+ * translation, -dot(axis, eye), rounds by as much. So a model whose centre
+ * is more than 2^20 times its radius from the origin is moved to the
+ * origin before anything is framed or projected: a vertex minus a centre
+ * that near is exact (Sterbenz), and the picture is the one the model's own
+ * coordinates give. Any other model stays where it is, to the bit. */
+static Vec3 model_origin(const Mesh *m)
+{
+    Vec3 centre;
+    double radius;
+    fit_sphere(m, &centre, &radius);
+    return vec3_length(centre) > FAR_MODEL_RATIO * radius ? centre : vec3(0, 0, 0);
+}
+
+/* Fills r->mesh from --obj or --scene and tells which camera frames it. A
+ * model far from the origin is moved (model_origin), and the --eye and
+ * --target given with it too. */
+static int load_mesh(Render *r, Options *opt, SceneInfo *framing, Error *err)
 {
     if (opt->obj) {
         if (!mesh_load_obj(&r->mesh, opt->obj, err))
             return EXIT_RUN_FAILED;
         snprintf(r->source, sizeof r->source, "%s", opt->obj);
+        Vec3 origin = model_origin(&r->mesh);
+        if (origin.x != 0 || origin.y != 0 || origin.z != 0) {
+            for (int i = 0; i < r->mesh.nverts; i++)
+                r->mesh.verts[i] = vec3_sub(r->mesh.verts[i], origin);
+            if (opt->eye_set)
+                opt->eye = vec3_sub(opt->eye, origin);
+            if (opt->target_set)
+                opt->target = vec3_sub(opt->target, origin);
+        }
         *framing = render_fit_camera(&r->mesh, opt->width, opt->height);
         if (opt->eye_set)
             fit_planes_to_eye(&r->mesh, opt->eye, framing);

@@ -13,7 +13,11 @@
  * An OBJ seen from an eye given with --eye, without --near or --far, gets
  * its planes fitted to that eye, not to the camera --obj would have chosen:
  * from inside a cube, or 20 units from it, the picture used to be blank,
- * the model outside the planes, and the run exited 0. */
+ * the model outside the planes, and the run exited 0.
+ *
+ * A small model far from the origin is drawn as it is at the origin: a unit
+ * triangle in the plane x = 1e17 used to be drawn by no pixel, the fitted
+ * eye rounded into that plane, and the run exited 0. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -117,6 +121,52 @@ static void planes_are_fitted_to_the_eye_given(void **state)
         }
 }
 
+/* The face picture of a unit triangle in the plane x = X, framed by --obj. */
+static Image triangle_at(const char *lesson, const char *x, const char *dir)
+{
+    Path obj = in_dir(dir, "far.obj"), ids = in_dir(dir, "ids.png"), out = in_dir(dir, "out.png");
+    char text[256];
+    snprintf(text, sizeof text, "v %s 0 0\nv %s 1 0\nv %s 0 1\nf 1 2 3\n", x, x, x);
+    write_text(obj.path, text);
+    const char *args[] = {"--obj", obj.path, "--width", "64", "--height", "48", "--out", out.path,
+                          "--id-out", ids.path, NULL};
+    free(run_ok(lesson, args));
+    return read_png(ids.path);
+}
+
+static void a_small_model_far_from_the_origin_is_drawn(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("far_model");
+    const char *lessons[] = {"03_perspective_z", "05_clipping", "10_fast_raster"};
+    const char *far[] = {"1e16", "1e17", "1e30"};
+    for (size_t k = 0; k < sizeof lessons / sizeof lessons[0]; k++) {
+        Image near = triangle_at(lessons[k], "0", dir);
+        long drawn = 0;
+        for (int y = 0; y < near.height; y++)
+            for (int x = 0; x < near.width; x++) {
+                Rgb p = image_get(&near, x, y);
+                drawn += p.r || p.g || p.b;
+            }
+        if (drawn == 0)
+            fail_msg("%s: the triangle at x = 0 drew no pixel", lessons[k]);
+        for (size_t f = 0; f < sizeof far / sizeof far[0]; f++) {
+            Image a = triangle_at(lessons[k], far[f], dir);
+            long differ = 0;
+            for (int y = 0; y < a.height; y++)
+                for (int x = 0; x < a.width; x++) {
+                    Rgb p = image_get(&near, x, y), q = image_get(&a, x, y);
+                    differ += p.r != q.r || p.g != q.g || p.b != q.b;
+                }
+            if (differ != 0)
+                fail_msg("%s: the triangle at x = %s differs from the one at x = 0 at %ld of "
+                         "its %ld pixels", lessons[k], far[f], differ, drawn);
+            image_free(&a);
+        }
+        image_free(&near);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -124,6 +174,7 @@ int main(void)
         cmocka_unit_test(a_near_plane_past_the_stand_in_for_far_inf_is_named),
         cmocka_unit_test(planes_are_fitted_to_the_eye_given),
         cmocka_unit_test(one_plane_past_the_scenes_other_is_named),
+        cmocka_unit_test(a_small_model_far_from_the_origin_is_drawn),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
