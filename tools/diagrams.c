@@ -50,6 +50,7 @@
 #include <string.h>
 
 #include "error.h"
+#include "harness/file.h"
 #include "harness/font.h"
 #include "harness/image_io.h"
 
@@ -1276,6 +1277,7 @@ static const Diagram DIAGRAMS[] = {
 
 int main(int argc, char **argv)
 {
+    signals_begin(PROGRAM); /* a signal from now on prints one line */
     if (argc == 2 && strcmp(argv[1], "--help") == 0) {
         printf("usage: " PROGRAM " DIR\n"
                "Writes the lessons' diagrams into DIR: 02_edge_functions.png,\n"
@@ -1289,23 +1291,31 @@ int main(int argc, char **argv)
                         "into (usage: " PROGRAM " DIR)\n");
         return EXIT_USAGE;
     }
+    /* The diagrams are one output set: all are published, or none (a
+     * failure or a signal at the fifth leaves no four new ones behind). */
+    output_set_begin();
+    Error err;
     for (size_t i = 0; i < sizeof DIAGRAMS / sizeof DIAGRAMS[0]; i++) {
         const Diagram *dg = &DIAGRAMS[i];
         char path[4096];
         int n = snprintf(path, sizeof path, "%s/%s", argv[1], dg->file);
         if (n < 0 || (size_t)n >= sizeof path) {
+            output_set_abort();
             fprintf(stderr, PROGRAM ": error: the directory name is too long\n");
             return EXIT_USAGE;
         }
         Image im;
-        Error err;
-        if (!image_init(&im, dg->width, dg->height, &err))
+        if (!image_init(&im, dg->width, dg->height, &err)) {
+            output_set_abort();
             return error_report(PROGRAM, &err, EXIT_RUN_FAILED);
+        }
         dg->draw(&im);
         bool ok = image_write_png(&im, path, &err);
         image_free(&im);
-        if (!ok)
+        if (!ok) {
+            output_set_abort();
             return error_report(PROGRAM, &err, EXIT_RUN_FAILED);
+        }
     }
-    return EXIT_OK;
+    return output_set_publish(&err) ? EXIT_OK : error_report(PROGRAM, &err, EXIT_RUN_FAILED);
 }
