@@ -32,7 +32,8 @@
  *   124 when it ran out of time,
  *   152 (128 + SIGXCPU) when it ran out of CPU time,
  *   128 + N when signal N killed it (a crash: 139 is a segmentation fault),
- *   125 when time_limit itself was used wrongly,
+ *   125 when time_limit itself was used wrongly, or could not write --output FILE
+ *       (a full disk: the program's output would be lost without a word),
  *   127 when the program could not be started. */
 #include <errno.h>
 #include <fcntl.h>
@@ -67,6 +68,7 @@ static volatile sig_atomic_t interrupted;
 /* --output: the read end of the child's pipe, the file, what is kept. */
 static int pipe_fd = -1, output_fd = -1;
 static long output_max = OUTPUT_MAX_DEFAULT, output_kept, output_dropped;
+static int output_errno; /* the first write into FILE that failed (0: none) */
 
 static void on_interrupt(int sig)
 {
@@ -126,8 +128,13 @@ static bool read_output(void)
         return false;
     long keep = output_max - output_kept;
     keep = keep < n ? keep : (long)n;
-    if (keep > 0 && write(output_fd, buf, (size_t)keep) == (ssize_t)keep)
-        output_kept += keep;
+    if (keep > 0) {
+        ssize_t written = write(output_fd, buf, (size_t)keep);
+        if (written == (ssize_t)keep)
+            output_kept += keep;
+        else if (!output_errno) /* a full disk, /dev/full: the output is lost, and said so */
+            output_errno = written < 0 ? errno : ENOSPC;
+    }
     output_dropped += (long)n - (keep > 0 ? keep : 0);
     return true;
 }
@@ -187,7 +194,7 @@ static bool finish_output(void)
                          output_max);
         ok = n > 0 && write(output_fd, note, (size_t)n) == n;
     }
-    return close(output_fd) == 0 && ok;
+    return close(output_fd) == 0 && ok && !output_errno;
 }
 
 int main(int argc, char **argv)
@@ -278,7 +285,8 @@ int main(int argc, char **argv)
     setpgid(pid, pid); /* also here: whichever runs first, the group exists */
     int status = wait_for(pid, limit);
     if (output && !finish_output()) {
-        fprintf(stderr, "time_limit: error: cannot write %s\n", output);
+        fprintf(stderr, "time_limit: error: cannot write %s%s%s\n", output,
+                output_errno ? ": " : "", output_errno ? strerror(output_errno) : "");
         return STATUS_OWN_FAILURE;
     }
     if (cpu_out) {

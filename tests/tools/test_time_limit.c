@@ -140,6 +140,19 @@ static void output_is_kept_to_its_cap(void **state)
     free(text);
 }
 
+/* Output that cannot be written (/dev/full) is lost: time_limit says so in
+ * one line, status 125, instead of passing the program's 0 on. */
+static void output_that_cannot_be_written_is_125(void **state)
+{
+    (void)state;
+    const char *args[] = {"--output", "/dev/full", "10", "sh", "-c", "echo hello", NULL};
+    RunResult r = run_tool("time_limit", args);
+    if (r.status != 125 ||
+        strcmp(r.err, "time_limit: error: cannot write /dev/full: No space left on device\n"))
+        fail_msg("status %d, wanted 125 and one line:\n%s", r.status, r.err);
+    run_result_free(&r);
+}
+
 static void missing_program_is_127(void **state)
 {
     (void)state;
@@ -190,6 +203,7 @@ int main(void)
         cmocka_unit_test(bad_limit_is_125_with_usage),
         cmocka_unit_test(cpu_time_limit_stops_computing_not_waiting),
         cmocka_unit_test(output_is_kept_to_its_cap),
+        cmocka_unit_test(output_that_cannot_be_written_is_125),
     };
     return cmocka_run_group_tests_name("tools: time_limit", tests, NULL, NULL);
 }
