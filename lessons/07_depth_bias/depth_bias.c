@@ -57,22 +57,34 @@ double polygon_offset(const DepthBias *bias, double m, double r)
     /* SOLUTION END */
 }
 
-/* The face's corners on the screen, as its triangles are set up: clipped at
- * near and far (clip.c) and divided, or as they are for a face made there. */
-static int face_on_screen(const ScreenFace *f, int width, int height, ScreenVertex *v)
+/* Part `part` of the face on the screen, as its triangles are set up:
+ * clipped at near and far (clip.c) and divided, or as it is for a face made
+ * there. The face whole is one part; a face of more corners than
+ * clip_polygon takes is clipped as its triangles (clip.h), one a part. */
+static int face_on_screen(const ScreenFace *f, int part, int width, int height,
+                          ScreenVertex *v)
 {
-    Vec4 kept[CLIP_MAX_OUT(CLIP_MAX_IN)];
-    if (f->n > CLIP_MAX_IN)
-        return 0; /* none: a face of so many corners gets no bias */
-    int n = f->clip ? clip_polygon(f->clip, f->n, kept) : f->n;
-    for (int k = 0; k < n; k++)
-        v[k] = f->clip ? clip_to_screen(kept[k], width, height) : f->v[k];
+    Vec4 in[CLIP_MAX_IN], kept[CLIP_MAX_OUT(CLIP_MAX_IN)];
+    bool whole = f->n <= CLIP_MAX_IN;
+    int n = whole ? f->n : 3;
+    for (int k = 0; k < n; k++) {
+        int c = whole ? k : f->tris[part].c[k];
+        if (f->clip)
+            in[k] = f->clip[c];
+        else
+            v[k] = f->v[c];
+    }
+    if (f->clip) {
+        n = clip_polygon(in, n, kept);
+        for (int k = 0; k < n; k++)
+            v[k] = clip_to_screen(kept[k], width, height);
+    }
     return n;
 }
 
 /* One face: a decal is drawn with its o, m from its plane (its triangles lie
- * in one) and r from its corners; any other face with o = 0, exactly as
- * lesson 06 draws it. */
+ * in one) and r from its corners (the largest r of its parts, the one of its
+ * largest |z_w|); any other face with o = 0, exactly as lesson 06 draws it. */
 static void draw_biased_face(Target *t, LessonState *state, const ScreenFace *f,
                              const DrawContext *ctx)
 {
@@ -80,12 +92,20 @@ static void draw_biased_face(Target *t, LessonState *state, const ScreenFace *f,
     const DepthBias *bias = &state->bias;
     ScreenVertex v[CLIP_MAX_OUT(CLIP_MAX_IN)];
     float o = 0;
-    int n;
-    if (bias->mesh && mesh_face_in(bias->mesh, f->face, "decal") &&
-        (n = face_on_screen(f, ctx->width, ctx->height, v)) >= 3) {
-        DepthPlane p = depth_plane(s, v);
-        o = (float)polygon_offset(bias, depth_slope(&p), resolvable_difference(s, v, n));
+    double m = 0, r = -1;
+    int parts = f->n <= CLIP_MAX_IN ? 1 : f->n - 2;
+    for (int k = 0; bias->mesh && mesh_face_in(bias->mesh, f->face, "decal") && k < parts; k++) {
+        int n = face_on_screen(f, k, ctx->width, ctx->height, v);
+        if (n < 3)
+            continue;
+        if (r < 0) {
+            DepthPlane p = depth_plane(s, v);
+            m = depth_slope(&p);
+        }
+        r = fmax(r, resolvable_difference(s, v, n));
     }
+    if (r >= 0)
+        o = (float)polygon_offset(bias, m, r);
     draw_triangles(t, state, f, ctx, o);
 }
 

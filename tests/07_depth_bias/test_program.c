@@ -4,7 +4,8 @@
  * the grazing floor lines, the page's recommended bias wins every decal all
  * of its pixels in every format, far too much bias shows the poster through
  * the pillar (named pixels); faces are drawn exactly as lesson 06 draws them
- * when nothing is offset; the four teaching pictures; bad input. */
+ * when nothing is offset; the four teaching pictures; bad input; a decal of
+ * more corners than clip_polygon takes is biased as a quad is. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -260,12 +261,42 @@ static void bad_command_lines_are_refused_with_status_2(void **state)
     expect_run_error(PROGRAM, none, 2, "07_depth_bias: error: --polygon-offset needs a value\n");
 }
 
+/* A decal of 100 corners (more than clip_polygon takes: it is clipped as its
+ * triangles) on a square drawn before it: with the recommended bias every
+ * fragment of it wins. Its bias used to be 0, and 479 of them lost. */
+#define TURN 6.283185307179586 /* 2 pi */
+
+static void a_decal_of_many_corners_is_biased_too(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("07_many_corners");
+    Path obj = in_dir(dir, "disc.obj"), out = in_dir(dir, "out.png");
+    char text[8192];
+    int used = snprintf(text, sizeof text, "v -2 -2 0\nv 2 -2 0\nv 2 2 0\nv -2 2 0\nf 1 2 3 4\n");
+    for (int i = 0; i < 100; i++)
+        used += snprintf(text + used, sizeof text - (size_t)used, "v %.17g %.17g 0\n",
+                         cos(TURN * i / 100), sin(TURN * i / 100));
+    used += snprintf(text + used, sizeof text - (size_t)used, "g decal\nf");
+    for (int i = 0; i < 100; i++)
+        used += snprintf(text + used, sizeof text - (size_t)used, " %d", 5 + i);
+    snprintf(text + used, sizeof text - (size_t)used, "\n");
+    write_text(obj.path, text);
+    const char *args[] = {"--obj", obj.path, "--eye", "0.5,0.3,5", "--target", "0,0,0",
+                          "--polygon-offset", RECOMMENDED, "--width", "64", "--height", "48",
+                          "--out", out.path, NULL};
+    char *summary = run_ok(PROGRAM, args);
+    if (!strstr(summary, "fragments: 3045 tested, 3045 passed, 0 failed;"))
+        fail_msg("the decal of 100 corners lost pixels to its base:\n%s", summary);
+    free(summary);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(without_bias_decals_lose_a_good_share),
         cmocka_unit_test(units_only_fix_the_posters_not_the_floor),
         cmocka_unit_test(recommended_bias_wins_every_decal_pixel),
+        cmocka_unit_test(a_decal_of_many_corners_is_biased_too),
         cmocka_unit_test(too_much_bias_shows_the_poster_through_the_pillar),
         cmocka_unit_test(without_bias_lesson_06s_picture),
         cmocka_unit_test(teaching_pictures),
