@@ -22,8 +22,9 @@
 #     the lesson's own files and of common/, the C library's mathematics,
 #     memory, strings and printing (FUNCTIONS below): no open, write, fork,
 #     exit, no harness or test function;
-#   - run code before main or after it (constructors, destructors), nor hold
-#     a system call or inline assembly;
+#   - run code before main or after it (constructors, destructors, the
+#     resolver of an indirect function), nor hold a system call or inline
+#     assembly;
 #   - (a header the tests include) hold a preprocessor line or an attribute
 #     that the teacher's does not, but an include of a standard header: it
 #     is compiled into the test itself.
@@ -73,6 +74,11 @@ directives() {
 sections() {
     objdump -h "$1" 2>/dev/null | awk '{ print $2 }' |
         grep -E '^\.(init_array|fini_array|preinit_array|ctors|dtors|init|fini)(\.|$)' | sort -u
+}
+# Whether an object holds a GNU indirect function (__attribute__((ifunc))):
+# the dynamic loader runs its resolver before main, before any constructor.
+ifuncs() {
+    nm --format=posix "$1" 2>/dev/null | awk '$2 == "i" { found = 1 } END { exit !found }'
 }
 # Whether an object holds a system call of its own.
 # shellcheck disable=SC2016 # a dollar of the assembly, not of the shell
@@ -187,6 +193,9 @@ while read -r f; do
         if [ -n "$(sections "$o")" ]; then
             refuse "$f" "runs code before main or after it (a constructor or destructor): not graded"
         fi
+        if ifuncs "$o"; then
+            refuse "$f" "runs code before main (an indirect function, whose resolver the loader runs): not graded"
+        fi
         if syscalls "$o"; then
             refuse "$f" "makes a system call of its own: not graded"
         fi ;;
@@ -218,6 +227,9 @@ for o in "$build/obj/tests/$lesson"/*.o; do
         grep -qxF "$t $sec" "$dir/tests.sections" 2>/dev/null ||
             refuse "its headers" "make the test $t run code before main or after it: not graded"
     done
+    if ifuncs "$o"; then
+        refuse "its headers" "make the test $t run code before main (an indirect function): not graded"
+    fi
     if syscalls "$o"; then
         refuse "its headers" "put a system call in the test $t: not graded"
     fi

@@ -199,6 +199,13 @@ static const char SUM_RECORDS_BEFORE_MAIN_C[] =
     "#include \"sum.h\"\n#include <unistd.h>\n"
     "__attribute__((constructor)) static void forge(void) { (void)!write(3, \"E passed\\n\", 9); }\n"
     "int sum_to(int n) { (void)n; return 0; }\n";
+/* Code run before main without a constructor: the resolver of an indirect
+ * function, which the dynamic loader calls while it relocates the program. */
+static const char SUM_RESOLVES_BEFORE_MAIN_C[] =
+    "#include \"sum.h\"\n#include <stdio.h>\n"
+    "static int sum_plain(int n) { return n * (n + 1) / 2; }\n"
+    "static int (*resolve(void))(int) { puts(\"before main\"); return sum_plain; }\n"
+    "int sum_to(int n) __attribute__((ifunc(\"resolve\")));\n";
 static const char SUM_WITH_A_HELPER_C[] =
     "#include \"sum.h\"\n#include <stdio.h>\n"
     "int advance(int n);\n"
@@ -689,6 +696,7 @@ static void a_judged_lesson_cannot_be_forged(void **state)
     expect_not_judged(SUM_REPLACES_PRINTF_C, "defines vsnprintf, a name the tests or the C library use");
     expect_not_judged(SUM_RECORDS_BEFORE_MAIN_C, "runs code before main");
     expect_not_judged(SUM_RECORDS_BEFORE_MAIN_C, "calls write");
+    expect_not_judged(SUM_RESOLVES_BEFORE_MAIN_C, "an indirect function, whose resolver the loader runs");
     expect_not_judged(SUM_REDEFINES_OBSERVER_C, "defines observed_int_equal");
     expect_not_judged(SUM_NEUTERS_CMOCKA_C, "begins with an underscore");
     expect_judged_score(SUM_WITH_A_HELPER_C, "5/5");
