@@ -14,7 +14,9 @@
 #      none fails), judged against them: it must score no more than 2.
 # Then, once:
 #   4. lesson 02's solution with a debug print in its depth test, one line
-#      a fragment: it must score full marks, its output cut short; and lesson
+#      a fragment: it must score full marks, its output cut short; lessons 01,
+#      04 and 05, whose tests read what their program writes to stderr, with
+#      a debug print there: full marks too; and lesson
 #      02 with all but depth_test() written: it must score the points of
 #      every test whose line in points.txt does not name depth_test();
 #   5. every lesson's solution judged while another process keeps every core
@@ -142,6 +144,37 @@ case " $* " in *" 02_zbuffer "*)
         status=1
     fi ;;
 esac
+
+# 4a. The same print to stderr where a lesson's tests run its program and
+# read what it wrote there (lessons 01, 04, 05): a line that is not the
+# program's own message costs nothing.
+for spec in "01_ybuffer ybuffer.c yb->y[x] = YBUFFER_CLEARED; fprintf(stderr, \"cleared %d\\n\", x);" \
+    "04_scanline_inverse_z depth_buffer.c bool passed = inv_d > stored; fprintf(stderr, \"fragment %zu 1/d %g\\n\", i, (double)inv_d);" \
+    "05_clipping clip.c double s = d_in / (d_in - d_out); fprintf(stderr, \"crossing at %g\\n\", s);"; do
+    l=${spec%% *}
+    case " $* " in *" $l "*) ;; *) continue ;; esac
+    rest=${spec#* }
+    file=${rest%% *}
+    rest=${rest#* }
+    anchor=${rest%%;*}
+    line=${rest#*; }
+    f="$copy/lessons/$l/$file"
+    # (through the environment: awk -v would read the \n of the line as a newline)
+    DEBUG_ANCHOR="$anchor;" DEBUG_LINE="$line" awk '
+        { print } index($0, ENVIRON["DEBUG_ANCHOR"]) && !done { print "    " ENVIRON["DEBUG_LINE"]; done = 1 }
+        END { if (!done) exit 1 }' "lessons/$l/$file" >"$f.tmp" &&
+        { echo '#include <stdio.h>'; cat "$f.tmp"; } >"$f" && rm -f "$f.tmp" ||
+        { echo "$prog: error: no place for a debug print in lessons/$l/$file" >&2; exit 1; }
+    judged_in_copy stderr "$l"
+    teacher=$(score_of "$work/reference.$l.log" "$l")
+    debug=$(score_of "$work/stderr.$l.log" "$l")
+    echo "$prog: $l with a debug print to stderr: ${debug:-?} (the solution: $teacher)"
+    if [ "$debug" != "$teacher" ]; then
+        echo "$prog: error: a correct solution with a debug print to stderr lost points:" >&2
+        grep '^  FAIL' "$work/stderr.$l.log" | grep -v ' 0/0 ' >&2
+        status=1
+    fi
+done
 
 # 4b. Partial credit: lesson 02 with every function written but depth_test()
 # (its two regions stubbed) scores the points of every test whose points.txt

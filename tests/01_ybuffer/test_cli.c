@@ -43,7 +43,7 @@ static void default_run_prints_the_summary_and_writes_three_pictures(void **stat
     const char *args[] = {"--out", out.path, "--ybuffer-out", yb.path, "--scene-out",
                           scene.path, NULL};
     RunResult r = run_program(PROGRAM, args);
-    assert_string_equal(r.err, "");
+    expect_no_message(r.err, PROGRAM);
     expect_count(0, r.status, "exit status");
     char want[TEXT_MAX];
     snprintf(want, sizeof want, DEFAULT_SUMMARY "wrote %s, %s, %s\n", out.path, yb.path,

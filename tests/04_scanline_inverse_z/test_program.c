@@ -35,7 +35,7 @@ static void default_run_draws_the_walls_and_finds_the_front_object(void **state)
     const char *args[] = {NULL};
     const char *dir = test_dir("l04_default"); /* not the student's out/ */
     RunResult r = run_program_in(dir, PROGRAM, args);
-    assert_string_equal(r.err, "");
+    expect_no_message(r.err, PROGRAM);
     expect_count(0, r.status, "exit status");
     expect_line(r.out, "04_scanline_inverse_z: scene walls (98 faces): ");
     expect_line(r.out, "  wrote out/04_scanline_inverse_z.png\n");
@@ -239,7 +239,7 @@ static void ascii_and_trace_speak_of_inverse_depth(void **state)
     (void)state;
     const char *extra[] = {"--ascii", "--trace", "4,1", NULL};
     RunResult r = render_two_buffers(test_dir("l04_two_buffers_text"), extra);
-    assert_string_equal(r.err, "");
+    expect_no_message(r.err, PROGRAM);
     expect_count(0, r.status, "exit status");
     expect_line(r.out, "  fragments: 36 tested, 24 passed, 12 failed; ");
     expect_line(r.out, "trace pixel (4,1): 2 fragments\n");

@@ -30,7 +30,7 @@ static void default_run_draws_the_room_to_the_screen_edges(void **state)
     const char *args[] = {NULL};
     const char *dir = test_dir("l05_default"); /* not the student's out/ */
     RunResult r = run_program_in(dir, PROGRAM, args);
-    assert_string_equal(r.err, "");
+    expect_no_message(r.err, PROGRAM);
     expect_count(0, r.status, "exit status");
     expect_line(r.out, "05_clipping: scene inside (42 faces): 76 triangles drawn, "
                        "8 dropped at the near plane\n");

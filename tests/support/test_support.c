@@ -554,6 +554,21 @@ void expect_line(const char *out, const char *line)
         fail_msg("the summary lacks the line\n%s\nit was:\n%s", line, out);
 }
 
+void expect_no_message(const char *err, const char *program)
+{
+    size_t n = strlen(program);
+    bool found = false;
+    for (const char *l = err; l && *l && !found;) {
+        found = strncmp(l, program, n) == 0 && l[n] == ':';
+        l = strchr(l, '\n');
+        l = l ? l + 1 : NULL;
+    }
+    observe_exact_string(__FILE__, __LINE__, "program", program);
+    observe_value("has no message", !found);
+    if (found)
+        fail_msg("%s wrote a message of its own on stderr:\n%s", program, err);
+}
+
 int compare_strings(const void *a, const void *b)
 {
     return strcmp((const char *)a, (const char *)b);

@@ -114,6 +114,10 @@ void expect_run_refused(const char *program, const char *const *args, int status
                         const char *message, const char *no_file);
 /* out must hold line somewhere (a summary line, with its newline if given). */
 void expect_line(const char *out, const char *line);
+/* err, a run's stderr, must hold no message of program's own (a line that
+ * begins "<program>:", an error or a warning). Other lines are not the
+ * program's: a student's debug print to stderr costs nothing. */
+void expect_no_message(const char *err, const char *program);
 
 /* strcmp for qsort over an array of fixed-size char arrays. */
 int compare_strings(const void *a, const void *b);
