@@ -63,7 +63,10 @@ void fragment(const Primitive *p, int x, int y, float inv_d)
         */
         /* SOLUTION END */
     } else {
-        /* SOLUTION BEGIN: early-Z: the test first, the shader if it passed. */
+        /* SOLUTION BEGIN: early-Z: the test first, the shader if it passed.
+         * (--bug early-z-with-discard sends a cutout here too: a fragment
+         * its shader discards leaves its depth, but the pixel keeps the
+         * face it had.) */
         int32_t before = p->target->face[i];
         z->tested++;
         if (depth_test(p, x, y, inv_d)) {
