@@ -19,6 +19,8 @@
 #
 # Before the tree is put in place, it is searched for every line that only
 # the solution has; one found there fails the handout, and nothing is written.
+# Every page's link to a file the handout does not hold keeps its words alone
+# (tools/md-links.awk).
 #
 # DEST defaults to BUILD/handout/<lesson>. An existing DEST is replaced only
 # if it is empty or an earlier handout (it holds the file .handout).
@@ -324,36 +326,17 @@ rm -rf "$files" "$lines" "$exprs" "$tmp.inherited"
 $leaks
 Say what to compute and why in words, not the formula; nothing was written."
 
-# The README as the handout holds it: a row of the lessons' table whose
-# lesson is not there goes, a picture that is not there too, and a link to
-# a file or directory that is not there (a later lesson's page, the
-# teacher's guide) keeps its words alone.
-if [ -f "$tmp/README.md" ]; then
-    awk -v root="$tmp" '
-        function there(path,    p) {
-            p = path; sub(/#.*/, "", p)
-            return p == "" || p ~ /^[a-z]+:/ || system("test -e \"" root "/" p "\"") == 0
-        }
-        /^\| / && match($0, /\]\(lessons\/[^)]*\)/) {
-            if (!there(substr($0, RSTART + 2, RLENGTH - 3))) next
-        }
-        match($0, /<img src="[^"]*"[^>]*>/) {
-            tag = substr($0, RSTART, RLENGTH); src = tag; sub(/^<img src="/, "", src); sub(/".*/, "", src)
-            if (!there(src)) $0 = substr($0, 1, RSTART - 1) substr($0, RSTART + RLENGTH)
-        }
-        {
-            out = ""; rest = $0
-            while (match(rest, /\[[^]]*\]\([^)]*\)/)) {
-                link = substr(rest, RSTART, RLENGTH)
-                words = substr(link, 2, index(link, "](") - 2)
-                path = substr(link, index(link, "](") + 2); sub(/\)$/, "", path)
-                out = out substr(rest, 1, RSTART - 1) (there(path) ? link : words)
-                rest = substr(rest, RSTART + RLENGTH)
-            }
-            print out rest
-        }' "$tmp/README.md" >"$tmp/README.md.new" && mv "$tmp/README.md.new" "$tmp/README.md" ||
-        die "cannot write the handout's README.md"
-fi
+# Every page as the handout holds it (tools/md-links.awk): a link to a file
+# or directory that is not there (a later lesson's page, a diff that shows
+# this lesson's code, the teacher's guide) keeps its words alone, a picture
+# that is not there goes, and so does a row of the README's table of lessons
+# whose lesson is not there.
+find "$tmp" -name '*.md' -type f | while read -r f; do
+    rows=0
+    [ "$f" = "$tmp/README.md" ] && rows=1
+    awk -v dir="$(dirname "$f")" -v mode=fix -v rows="$rows" -f tools/md-links.awk "$f" >"$f.new" &&
+        mv "$f.new" "$f" || exit 1
+done || die "cannot write the links of the handout's pages"
 
 echo "handout of lessons/$name, made by make handout" >"$tmp/.handout"
 rm -rf "$dest"

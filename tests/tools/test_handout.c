@@ -904,6 +904,19 @@ static void seed_build(const char *h)
     shell_ok(NULL, "sh tests/tools/seed_build.sh %s %s", seed, h);
 }
 
+/* No page of handout h links to a file the handout does not hold (a later
+ * lesson's page, a diff that shows the lesson's code, the teacher's guide):
+ * make handout keeps such a link's words alone (tools/md-links.awk). */
+static void expect_no_dangling_link(const char *h, const char *lesson)
+{
+    ShellResult r = shell(h, "find . -name '*.md' ! -path './build/*' | sort | while read -r f; do "
+                             "awk -v dir=\"$(dirname \"$f\")\" -v mode=check -f tools/md-links.awk "
+                             "\"$f\"; done");
+    if (r.output[0])
+        fail_msg("the handout of %s has links to what it does not hold:\n%s", lesson, r.output);
+    shell_result_free(&r);
+}
+
 /* make handout LESSON=NN with no option: the graded handout. It is written
  * (so handout.sh found no answer to a region in it), holds this lesson and
  * the earlier ones, and nothing of a later lesson: no code, test, page,
@@ -943,6 +956,7 @@ static void default_handout(void **state)
                      r.output);
         shell_result_free(&r);
     }
+    expect_no_dangling_link(h, lesson);
 }
 
 static void handout_round_trip(void **state)
@@ -968,6 +982,7 @@ static void handout_round_trip(void **state)
     expect_no_solution_line(s, h, lesson, &files);
     assert_true(files > 10);
     free_solution_lines(s);
+    expect_no_dangling_link(h, lesson);
     expect_tests_fail_with_hints(h, lesson);
 
     /* 3. The solution put back: every test of points.txt runs and passes, and
