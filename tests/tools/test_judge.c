@@ -239,6 +239,35 @@ static void a_picture_is_compared_with_the_expected_one(void **state)
     image_free(&want);
 }
 
+/* Equality checks that differ before a picture that differs (a test that
+ * read its picture back, whose hash is such a check): the judge names the
+ * picture too, since no message of the test does. */
+static void a_picture_behind_other_values_is_named(void **state)
+{
+    (void)state;
+    Image want = expected_picture(), three = expected_picture();
+    for (int k = 0; k < 3; k++)
+        image_set(&three, 10 + k, 20, (Rgb){1, 2, 3});
+    char *teacher_picture = picture_record(&want, 0), *student_picture = picture_record(&three, 0);
+    char teacher[640], student[640];
+    snprintf(teacher, sizeof teacher, "D 1 0123456789abcdef\n%s", teacher_picture);
+    snprintf(student, sizeof student, "D 1 fedcba9876543210\n%s", student_picture);
+    expect_said(judge(teacher, student, student_outputs(&three)), 1,
+                "found other values than the teacher's solution's (1 checks, the teacher's run 1)"
+                ": the messages above say which; the first picture that differs: tests/x.c:20: "
+                "picture 02_zbuffer/default: 3 pixels differ");
+    /* The same picture: the words on the checks alone. */
+    snprintf(student, sizeof student, "D 1 fedcba9876543210\n%s", teacher_picture);
+    Verdict v = judge(teacher, student, student_outputs(&want));
+    if (v.status != 1 || strstr(v.out, "picture"))
+        fail_msg("want the checks' words alone (status 1):\n%s", v.out);
+    free(v.out);
+    free(teacher_picture);
+    free(student_picture);
+    image_free(&three);
+    image_free(&want);
+}
+
 /* The run's picture must be its own file: not missing, not a link to the
  * expected picture (which the run could not read, but a link needs no
  * reading). */
@@ -282,6 +311,7 @@ int main(void)
         cmocka_unit_test(a_malformed_record_fails_cleanly),
         cmocka_unit_test(a_reference_that_did_not_pass_is_refused),
         cmocka_unit_test(a_picture_is_compared_with_the_expected_one),
+        cmocka_unit_test(a_picture_behind_other_values_is_named),
         cmocka_unit_test(a_picture_that_is_a_link_is_refused),
     };
     return cmocka_run_group_tests_name("tools judge", tests, NULL, NULL);
