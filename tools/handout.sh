@@ -338,6 +338,23 @@ find "$tmp" -name '*.md' -type f | while read -r f; do
         mv "$f.new" "$f" || exit 1
 done || die "cannot write the links of the handout's pages"
 
+# The README's section for teachers is the student's score instead: how
+# to hand out and grade is no business of the handout (nor is teaching.md
+# in it).
+if ! awk -v n="$number" '
+    /^## For teachers$/ {
+        print "## Your score"; print ""; print "```sh"
+        print "make grade LESSON=" n "   # each test alone, weighted by tests/<lesson>/points.txt: a score table"
+        print "```"; print ""
+        print "`make test` shows what failed and where; `make grade` weighs each test as"
+        print "your teacher does."
+        print ""; skip = 1; next
+    }
+    skip && /^## / { skip = 0 }
+    !skip' "$tmp/README.md" >"$tmp/README.md.new" || ! mv "$tmp/README.md.new" "$tmp/README.md"; then
+    die "cannot write the handout's README"
+fi
+
 echo "handout of lessons/$name, made by make handout" >"$tmp/.handout"
 rm -rf "$dest"
 mv "$tmp" "$dest" || die "cannot move the handout to $dest"

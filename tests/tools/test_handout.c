@@ -917,6 +917,22 @@ static void expect_no_dangling_link(const char *h, const char *lesson)
     shell_result_free(&r);
 }
 
+/* The handout's README is the student's: its section for teachers (and its
+ * word of the teacher's guide) gives way to how to get one's score. */
+static void expect_readme_for_the_student(const char *h, const char *lesson)
+{
+    char path[2 * PATH_MAX_LEN + 32], command[64];
+    snprintf(path, sizeof path, "%s/README.md", h);
+    char *text = read_text(path);
+    snprintf(command, sizeof command, "make grade LESSON=%.2s ", lesson);
+    if (strstr(text, "For teachers") || strstr(text, "teaching.md"))
+        fail_msg("the README of the handout of %s still speaks to the teacher", lesson);
+    if (!strstr(text, "## Your score") || !strstr(text, command))
+        fail_msg("the README of the handout of %s does not say how to get a score (%s)", lesson,
+                 command);
+    free(text);
+}
+
 /* make handout LESSON=NN with no option: the graded handout. It is written
  * (so handout.sh found no answer to a region in it), holds this lesson and
  * the earlier ones, and nothing of a later lesson: no code, test, page,
@@ -957,6 +973,7 @@ static void default_handout(void **state)
         shell_result_free(&r);
     }
     expect_no_dangling_link(h, lesson);
+    expect_readme_for_the_student(h, lesson);
 }
 
 static void handout_round_trip(void **state)
