@@ -341,7 +341,7 @@ done || die "cannot write the links of the handout's pages"
 # The README's section for teachers is the student's score instead: how
 # to hand out and grade is no business of the handout (nor is teaching.md
 # in it).
-if ! awk -v n="$number" '
+if [ -f "$tmp/README.md" ] && ! { awk -v n="$number" '
     /^## For teachers$/ {
         print "## Your score"; print ""; print "```sh"
         print "make grade LESSON=" n "   # each test alone, weighted by tests/<lesson>/points.txt: a score table"
@@ -351,7 +351,7 @@ if ! awk -v n="$number" '
         print ""; skip = 1; next
     }
     skip && /^## / { skip = 0 }
-    !skip' "$tmp/README.md" >"$tmp/README.md.new" || ! mv "$tmp/README.md.new" "$tmp/README.md"; then
+    !skip' "$tmp/README.md" >"$tmp/README.md.new" && mv "$tmp/README.md.new" "$tmp/README.md"; }; then
     die "cannot write the handout's README"
 fi
 
