@@ -25,13 +25,10 @@ while [ $# -gt 0 ]; do
     shift
 done
 [ -n "$lesson" ] || { echo "usage: make autograder LESSON=NN" >&2; exit 2; }
-name=""
-for d in lessons/"$lesson"*; do
-    [ -d "$d" ] || continue
-    [ -z "$name" ] || { echo "$prog: error: LESSON=$lesson matches more than one lesson" >&2; exit 2; }
-    name=${d#lessons/}
-done
-[ -n "$name" ] || { echo "$prog: error: no lesson LESSON=$lesson in lessons/" >&2; exit 2; }
+# One lesson, never a path (tools/lesson-name.sh).
+. "$(dirname "$0")/lesson-name.sh"
+lesson_name LESSON "$lesson"
+name=$lesson_name
 command -v zip >/dev/null || { echo "$prog: error: make autograder needs zip (apt-get install zip)" >&2; exit 1; }
 
 out="$build/autograder"

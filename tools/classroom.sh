@@ -25,9 +25,11 @@ while [ $# -gt 0 ]; do
     shift
 done
 [ -n "$lesson" ] || { echo "usage: make classroom LESSON=NN [DEST=file]" >&2; exit 2; }
-name=""
-for d in lessons/"$lesson"*; do [ -d "$d" ] && name=${d#lessons/}; done
-[ -n "$name" ] || { echo "classroom: error: no lesson LESSON=$lesson in lessons/" >&2; exit 2; }
+# One lesson, never a path or the last of several (tools/lesson-name.sh).
+prog=classroom
+. "$(dirname "$0")/lesson-name.sh"
+lesson_name LESSON "$lesson"
+name=$lesson_name
 number=$(echo "$name" | cut -c1-2)
 points="tests/$name/points.txt"
 [ -f "$points" ] || { echo "classroom: error: $points is missing" >&2; exit 1; }

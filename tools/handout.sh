@@ -74,14 +74,11 @@ esac
 [ -f Makefile ] && [ -d lessons ] && [ -d common ] ||
     usage "run it from the top of the series (where the Makefile is)"
 
-# LESSON=03 or LESSON=03_perspective_z: exactly one lesson directory.
-name=""
-for d in lessons/"$lesson"*; do
-    [ -d "$d" ] || continue
-    [ -z "$name" ] || usage "LESSON=$lesson matches more than one lesson"
-    name=${d#lessons/}
-done
-[ -n "$name" ] || usage "no lesson LESSON=$lesson in lessons/ (they are: $(ls lessons | tr '\n' ' '))"
+# LESSON=03 or LESSON=03_perspective_z: exactly one lesson directory, never
+# a path (tools/lesson-name.sh).
+. "$(dirname "$0")/lesson-name.sh"
+lesson_name LESSON "$lesson"
+name=$lesson_name
 number=$(echo "$name" | cut -c1-2)
 awk_regions=tools/solution-regions.awk
 

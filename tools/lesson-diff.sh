@@ -15,15 +15,19 @@ if [ $# -ne 2 ]; then
     echo "usage: make diff FROM=NN TO=NN   (e.g. make diff FROM=02 TO=03)" >&2
     exit 2
 fi
-find_lesson() {
-    for d in lessons/"$1"*; do
-        [ -d "$d" ] && { echo "$d"; return 0; }
-    done
-    echo "lesson-diff: error: no lesson '$1' in lessons/" >&2
+# Each a lesson's number or name, never a path: the copies below are made
+# under the lesson's name, and FROM=../.. once wrote over files outside the
+# tree (tools/lesson-name.sh).
+prog=lesson-diff
+. "$(dirname "$0")/lesson-name.sh"
+lesson_name FROM "$1"
+from=lessons/$lesson_name
+lesson_name TO "$2"
+to=lessons/$lesson_name
+if [ "$from" = "$to" ]; then
+    echo "$prog: error: FROM=$1 and TO=$2 are the same lesson, ${from#lessons/}: nothing to compare" >&2
     exit 2
-}
-from=$(find_lesson "$1")
-to=$(find_lesson "$2")
+fi
 # "new old" pairs: TO's files that replace one of FROM's.
 replaces=""
 if [ -f "$to/REPLACES" ]; then

@@ -27,12 +27,9 @@ prog=lesson-tree
 
 usage() { echo "$prog: error: $1" >&2; exit 2; }
 
-lesson_dir() { # 07 or 07_depth_bias -> lessons/07_depth_bias
-    for d in lessons/"$1"*; do
-        [ -d "$d" ] && { echo "$d"; return 0; }
-    done
-    usage "no lesson '$1' in lessons/"
-}
+# 07 or 07_depth_bias -> lessons/07_depth_bias, or one line and status 2
+# (a path such as ../.. or a pattern is no lesson: tools/lesson-name.sh).
+. "$(dirname "$0")/lesson-name.sh"
 
 # The rows of a lesson's README table: "<link text> <owner lesson> <path there>".
 inherited() {
@@ -184,12 +181,14 @@ check() {
 [ -d lessons ] || usage "run it from the top of the series (where lessons/ is)"
 case $1 in
     list) [ $# -eq 2 ] || usage "usage: lesson-tree.sh list LESSON"
-          files=$(list "$(lesson_dir "$2")") || exit 1
+          lesson_name LESSON "$2"
+          files=$(list "lessons/$lesson_name") || exit 1
           echo "$files" | sort ;;
     assemble) [ $# -eq 2 ] || usage "usage: lesson-tree.sh assemble DIR"
           assemble "${2%/}" ;;
     copy) [ $# -eq 3 ] || usage "usage: lesson-tree.sh copy LESSON DEST"
-          copy "$(lesson_dir "$2")" "$3" ;;
+          lesson_name LESSON "$2"
+          copy "lessons/$lesson_name" "$3" ;;
     check) [ $# -eq 1 ] || usage "usage: lesson-tree.sh check"
           check ;;
     *) usage "unknown command $1" ;;

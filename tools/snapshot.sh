@@ -36,13 +36,11 @@ done
 [ -n "$lesson" ] || usage "which lesson? e.g. LESSON=07"
 [ -f Makefile ] && [ -d lessons ] && [ -d common ] ||
     usage "run it from the top of the series (where the Makefile is)"
-name=""
-for d in lessons/"$lesson"*; do
-    [ -f "$d/main.c" ] || continue
-    [ -z "$name" ] || usage "LESSON=$lesson matches more than one lesson"
-    name=${d#lessons/}
-done
-[ -n "$name" ] || usage "no lesson LESSON=$lesson in lessons/ (they are: $(ls lessons | tr '\n' ' '))"
+# LESSON=07 or 07_depth_bias: one lesson, never a path (tools/lesson-name.sh).
+. "$(dirname "$0")/lesson-name.sh"
+lesson_name LESSON "$lesson"
+name=$lesson_name
+[ -f "lessons/$name/main.c" ] || usage "lessons/$name has no main.c: not a lesson to build"
 
 [ -n "$dest" ] || dest="$build/snapshot/$name"
 dest=${dest%/}

@@ -1,0 +1,106 @@
+/* test_make_targets.c: the scripts behind the make targets a student or a
+ * teacher types (make diff, snapshot, handout, classroom, autograder), given
+ * values that are not theirs to take.
+ *
+ *   - A lesson is its two digits or its name: a path (FROM=.., which made
+ *     make diff read the whole tree above and write copies there; FROM=../..
+ *     wrote over files outside it), a pattern, one digit (LESSON=1 was lesson
+ *     10) or a prefix of several lessons (make classroom LESSON=0 took the
+ *     last, 09) is refused in one line, status 2, and nothing is written. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "shell.h"
+#include "test_support.h"
+
+#define SHELL_TIMEOUT 300
+#define PATH_LEN 4096
+
+/* An absolute path for test_dir(name), in buf. */
+static const char *abs_dir(const char *name, char *buf, size_t size)
+{
+    const char *dir = test_dir(name);
+    char here[PATH_LEN];
+    if (!getcwd(here, sizeof here))
+        fail_msg("getcwd failed");
+    int n = dir[0] == '/' ? snprintf(buf, size, "%s", dir) : snprintf(buf, size, "%s/%s", here, dir);
+    if (n < 0 || (size_t)n >= size)
+        fail_msg("path too long: %s", dir);
+    return buf;
+}
+
+/* Runs command from the top of the tree: it must exit with status `want`,
+ * and the first line it prints must hold `words`; with one_line, it is the
+ * only line (a usage line may follow an error otherwise). */
+static void expect_refusal(const char *command, int want, const char *words, bool one_line)
+{
+    ShellResult r = run_shell(NULL, SHELL_TIMEOUT, "%s", command);
+    const char *nl = strchr(r.output, '\n');
+    const char *found = strstr(r.output, words);
+    if (r.status != want || !nl || !found || found > nl || (one_line && nl[1] != '\0'))
+        fail_msg("`%s`: status %d (want %d), want %s with \"%s\":\n%s", command, r.status, want,
+                 one_line ? "one line" : "a first line", words, r.output);
+    shell_result_free(&r);
+}
+#define expect_one_line(command, want, words) expect_refusal(command, want, words, true)
+
+/* The number of entries in dir, "." and ".." aside. */
+static int entries(const char *dir)
+{
+    char command[PATH_LEN + 64];
+    snprintf(command, sizeof command, "ls -A '%s' | wc -l", dir);
+    ShellResult r = run_shell(NULL, SHELL_TIMEOUT, "%s", command);
+    int n = atoi(r.output);
+    shell_result_free(&r);
+    return n;
+}
+
+static void values_that_are_not_one_lesson_are_refused(void **state)
+{
+    (void)state;
+    char dir[PATH_LEN], command[3 * PATH_LEN];
+    abs_dir("make_targets_lessons", dir, sizeof dir);
+    static const struct {
+        const char *command; /* %s: the scratch directory */
+        const char *words;
+    } cases[] = {
+        {"sh tools/lesson-diff.sh .. 02", "FROM=.. is not a lesson"},
+        {"sh tools/lesson-diff.sh 02 'lessons/../..'", "TO=lessons/../.. is not a lesson"},
+        {"sh tools/lesson-diff.sh 0 1", "FROM=0 is not a lesson"},
+        {"sh tools/lesson-diff.sh 03 03_perspective_z", "are the same lesson, 03_perspective_z"},
+        {"sh tools/lesson-diff.sh 99 03", "no lesson FROM=99 in lessons/"},
+        {"sh tools/lesson-tree.sh list nosuch", "LESSON=nosuch is not a lesson"},
+        {"sh tools/lesson-tree.sh list 99", "no lesson LESSON=99 in lessons/"},
+        {"sh tools/lesson-tree.sh copy 99 '%s/copy'", "no lesson LESSON=99"},
+        {"sh tools/classroom.sh --dest '%s/t.json' 0", "LESSON=0 is not a lesson"},
+        {"sh tools/classroom.sh --dest '%s/t.json' 1", "LESSON=1 is not a lesson"},
+        {"sh tools/classroom.sh --dest '%s/t.json' '0*'", "LESSON=0* is not a lesson"},
+        {"sh tools/snapshot.sh --dest '%s/s' 1", "LESSON=1 is not a lesson"},
+        {"sh tools/snapshot.sh --dest '%s/s' ../lessons/03", "is not a lesson"},
+        {"sh tools/handout.sh --dest '%s/h' 1", "LESSON=1 is not a lesson"},
+        {"sh tools/autograder.sh --build '%s' 1", "LESSON=1 is not a lesson"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        snprintf(command, sizeof command, cases[i].command, dir);
+        expect_one_line(command, 2, cases[i].words);
+        if (entries(dir) != 0)
+            fail_msg("`%s` wrote into %s", command, dir);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(values_that_are_not_one_lesson_are_refused),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
