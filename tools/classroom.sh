@@ -19,7 +19,8 @@ dest=classroom50/tests.json
 lesson=""
 while [ $# -gt 0 ]; do
     case $1 in
-        --dest) dest=$2; shift ;;
+        --dest) [ $# -ge 2 ] || { echo "classroom: error: --dest wants a file" >&2; exit 2; }
+                dest=$2; shift ;;
         *) lesson=$1 ;;
     esac
     shift
@@ -33,7 +34,37 @@ name=$lesson_name
 number=$(echo "$name" | cut -c1-2)
 points="tests/$name/points.txt"
 [ -f "$points" ] || { echo "classroom: error: $points is missing" >&2; exit 1; }
-mkdir -p "$(dirname "$dest")"
+# DEST is a file, written whole to a temporary name beside it and renamed
+# into place: never a directory (the rename would put the file inside it) nor
+# a device or a pipe (the rename would put a file in its place: DEST=/dev/full
+# replaced the device); a link is followed to the file it names.
+case $dest in
+    '') echo "$prog: error: DEST is empty: name the file to write" >&2; exit 2 ;;
+    */) echo "$prog: error: DEST=$dest ends in '/': name the file to write" >&2; exit 2 ;;
+esac
+if [ -L "$dest" ]; then
+    dest=$(readlink -f "$dest") ||
+        { echo "$prog: error: DEST is a link that leads nowhere a file can be" >&2; exit 2; }
+fi
+if [ -d "$dest" ]; then
+    echo "$prog: error: DEST=$dest is a directory: name the file to write (e.g. $dest/tests.json)" >&2
+    exit 2
+elif [ -e "$dest" ] && [ ! -f "$dest" ]; then
+    echo "$prog: error: DEST=$dest exists and is not a regular file" >&2
+    exit 2
+fi
+dir=$(dirname "$dest")
+if [ -e "$dir" ] && [ ! -d "$dir" ]; then
+    echo "$prog: error: DEST=$dest: $dir is not a directory" >&2
+    exit 2
+fi
+mkdir -p "$dir" 2>/dev/null || { echo "$prog: error: cannot create the directory $dir" >&2; exit 1; }
+tmp="$dir/.${dest##*/}.tmp.$$"
+( set -C; : >"$tmp" ) 2>/dev/null || { tmp=""; echo "$prog: error: cannot write in $dir" >&2; exit 1; }
+trap '[ -z "$tmp" ] || rm -f "$tmp"' EXIT
+trap 'exit 129' HUP
+trap 'exit 130' INT
+trap 'exit 143' TERM
 awk -v n="$number" -v lesson="$name" '
     BEGIN {
         print "["
@@ -44,7 +75,9 @@ awk -v n="$number" -v lesson="$name" '
         printf ",\n  {\"name\": \"%s\", \"type\": \"run\", \"run\": \"sh tools/grade.sh --build build --test %s %s\", \"timeout\": 120, \"points\": %s}",
             $1, $1, lesson, $2 + 0
     }
-    END { print "\n]" }' "$points" >"$dest.tmp"
-mv "$dest.tmp" "$dest"
+    END { print "\n]" }' "$points" >"$tmp" ||
+    { echo "$prog: error: cannot write $dest" >&2; exit 1; }
+mv "$tmp" "$dest" || { echo "$prog: error: cannot write $dest" >&2; exit 1; }
+tmp=""
 echo "classroom: wrote $dest: $(($(grep -c '"run"' "$dest") - 1)) tests of $name, after its setup"
 echo "classroom: gh teacher assignment add ... --tests $dest   (or paste it into the assignment form)"

@@ -34,9 +34,14 @@ usage() {
     echo "usage: make handout LESSON=NN [DEST=dir] [ONLY=1]" >&2
     exit 2
 }
+# The handout is built in $tmp, beside DEST; the lists of the checks in $work,
+# a directory of this run's own (so that no list is left beside DEST, and no
+# name in DEST, spaces and all, is ever split into words or read by awk or sed).
+tmp="" work=""
+clean_up() { [ -z "$tmp" ] || rm -rf "$tmp"; [ -z "$work" ] || rm -rf "$work"; }
 die() {
     echo "$prog: error: $1" >&2
-    [ -n "${tmp:-}" ] && rm -rf "$tmp" "$tmp.inherited"
+    clean_up
     exit 1
 }
 
@@ -99,9 +104,8 @@ awk -v mode=regions -f "$awk_regions" $marked >/dev/null ||
     die "the solution markers above are malformed; nothing was written"
 
 [ -n "$dest" ] || dest="$build/handout/$name"
-case $dest in
-    */) dest=${dest%/} ;;
-esac
+# Without its trailing slashes, but / stays / (refused below, as not empty).
+while [ "${dest%/}" != "$dest" ] && [ -n "${dest%/}" ]; do dest=${dest%/}; done
 if [ -e "$dest" ]; then
     [ -d "$dest" ] || usage "DEST=$dest exists and is not a directory"
     if [ ! -f "$dest/.handout" ] && [ -n "$(ls -A "$dest")" ]; then
@@ -115,7 +119,10 @@ mkdir -p "$parent" || die "cannot create $parent"
 tmp="$dest.tmp.$$"
 rm -rf "$tmp"
 mkdir "$tmp" || die "cannot create $tmp"
-trap 'rm -rf "$tmp" "$tmp.inherited"' INT TERM HUP
+work=$(mktemp -d) || die "cannot create a temporary directory"
+trap 'clean_up; exit 129' HUP
+trap 'clean_up; exit 130' INT
+trap 'clean_up; exit 143' TERM
 
 # copy PATH: PATH (file or directory) into the same place in the handout.
 copy() {
@@ -237,23 +244,26 @@ fi
 # but in other lessons (and their pages), which the teacher chose to include
 # as they are. Lines are compared as solution-regions.awk prints them:
 # trimmed, without their trailing comment and final ";".
-lines="$tmp.lines"
+lines="$work/lines"
 # All of the lesson is read: a line it has outside the regions gives nothing away.
-sources=$lesson_files
+# (The sources are the arguments: "$@", one word each, whatever DEST is.)
+# shellcheck disable=SC2086 # the lesson's files: plain relative paths
+set -- $lesson_files
 case " $marked " in
-    *" docs/$name.md "*) sources="$sources docs/$name.md" ;;
+    *" docs/$name.md "*) set -- "$@" "docs/$name.md" ;;
 esac
 # So is all of what it inherits, which the handout holds solved: read as the
 # teacher reads it (without markers), every line of it is outside the regions.
-mkdir "$tmp.inherited" || die "cannot create $tmp.inherited"
+mkdir "$work/inherited" || die "cannot create $work/inherited"
 echo "$inherits" | awk -v own="lessons/$name/" 'NF == 2 && index($2, own) != 1 { print $2 }' | sort -u |
     while read -r f; do
-        awk -v mode=clean -f "$awk_regions" "$f" >"$tmp.inherited/$(echo "$f" | tr / _)" || exit 1
+        awk -v mode=clean -f "$awk_regions" "$f" >"$work/inherited/$(echo "$f" | tr / _)" || exit 1
     done || die "cannot read the files lessons/$name inherits"
-sources="$sources $(find "$tmp.inherited" -type f | sort | tr '\n' ' ')"
-# shellcheck disable=SC2086
-awk -v mode=lines -f "$awk_regions" $sources >"$lines" || die "cannot list the solution lines"
-files="$tmp.files"
+for f in "$work"/inherited/*; do
+    if [ -f "$f" ]; then set -- "$@" "$f"; fi
+done
+awk -v mode=lines -f "$awk_regions" "$@" >"$lines" || die "cannot list the solution lines"
+files="$work/files"
 (cd "$tmp" && find . -type f ! -name '*.png' ! -name '*.pfm' ! -name '*.pgm') |
     sed 's|^\./||' | while read -r f; do
         case $f in
@@ -265,14 +275,12 @@ files="$tmp.files"
             *) echo "$f" ;;
         esac
     done >"$files"
-leaks=$(sed "s|^|$tmp/|" "$files" | tr '\n' '\0' |
-    xargs -0 -r awk -v mode=find -v lines="$lines" -f "$awk_regions" |
-    awk -F '\t' -v root="$tmp/" '{
-        f = $1
-        if (index(f, root) == 1) f = substr(f, length(root) + 1)
-        printf "  %s has %s (%s)\n", f, $2, $3
-    }')
-[ -z "$leaks" ] || { rm -rf "$files" "$lines" "$tmp.inherited"; die "a line of a solution region is in the handout:
+# (Read from inside the handout, by the names the list has.)
+regions_abs="$PWD/$awk_regions"
+leaks=$(cd "$tmp" && tr '\n' '\0' <"$files" |
+    xargs -0 -r awk -v mode=find -v lines="$lines" -f "$regions_abs" |
+    awk -F '\t' '{ printf "  %s has %s (%s)\n", $1, $2, $3 }')
+[ -z "$leaks" ] || { die "a line of a solution region is in the handout:
 $leaks
 Widen the region, or change the line outside it; nothing was written."; }
 
@@ -284,10 +292,9 @@ Widen the region, or change the line outside it; nothing was written."; }
 # Both sides are also read the way a paraphrase writes them: without
 # parentheses, "*" or backquotes, and with "or" and "and" for || and &&, so
 # that "x > 0 or (x == 0 and y)" reads as the expression it spells out.
-exprs="$tmp.exprs"
-# shellcheck disable=SC2086
-awk -v mode=exprs -f "$awk_regions" $sources >"$exprs" || die "cannot list the solution expressions"
-leaks=$(awk -v exprs="$exprs" -v files="$files" -v root="$tmp" '
+exprs="$work/exprs"
+awk -v mode=exprs -f "$awk_regions" "$@" >"$exprs" || die "cannot list the solution expressions"
+leaks=$(cd "$tmp" && awk -v exprs="$exprs" -v files="$files" -v root=. '
     function paraphrase(s) {
         gsub(/[()*`]/, "", s)
         gsub(/[|][|]/, "or", s)
@@ -318,7 +325,7 @@ leaks=$(awk -v exprs="$exprs" -v files="$files" -v root="$tmp" '
             }
         }
     }')
-rm -rf "$files" "$lines" "$exprs" "$tmp.inherited"
+rm -rf "$files" "$lines" "$exprs" "$work/inherited"
 [ -z "$leaks" ] || die "a solution expression is in the handout (white space aside):
 $leaks
 Say what to compute and why in words, not the formula; nothing was written."
@@ -356,6 +363,7 @@ echo "handout of lessons/$name, made by make handout" >"$tmp/.handout"
 rm -rf "$dest"
 mv "$tmp" "$dest" || die "cannot move the handout to $dest"
 tmp=""
+clean_up
 
 todos=$(cd "$dest" && grep -rn 'TODO(student):' "lessons/$name" "docs/$name.md" 2>/dev/null || true)
 count=$(echo "$todos" | grep -c . || true)

@@ -43,7 +43,8 @@ name=$lesson_name
 [ -f "lessons/$name/main.c" ] || usage "lessons/$name has no main.c: not a lesson to build"
 
 [ -n "$dest" ] || dest="$build/snapshot/$name"
-dest=${dest%/}
+# Without its trailing slashes, but / stays / (refused below, as not empty).
+while [ "${dest%/}" != "$dest" ] && [ -n "${dest%/}" ]; do dest=${dest%/}; done
 if [ -e "$dest" ]; then
     [ -d "$dest" ] || usage "DEST=$dest exists and is not a directory"
     if [ ! -f "$dest/.snapshot" ] && [ -n "$(ls -A "$dest")" ]; then
@@ -54,7 +55,10 @@ mkdir -p "$(dirname "$dest")" || die "cannot create $(dirname "$dest")"
 tmp="$dest.tmp.$$"
 rm -rf "$tmp"
 mkdir "$tmp" || die "cannot create $tmp"
-trap 'rm -rf "$tmp"' INT TERM HUP
+# A signal ends the run, its copy removed (a trap that did not exit would go on).
+trap 'rm -rf "$tmp"; exit 129' HUP
+trap 'rm -rf "$tmp"; exit 130' INT
+trap 'rm -rf "$tmp"; exit 143' TERM
 
 sh tools/lesson-tree.sh copy "$name" "$tmp" || die "cannot copy the files of lessons/$name"
 cp -R common "$tmp/common" || die "cannot copy common/"

@@ -6,7 +6,12 @@
  *     make diff read the whole tree above and write copies there; FROM=../..
  *     wrote over files outside it), a pattern, one digit (LESSON=1 was lesson
  *     10) or a prefix of several lessons (make classroom LESSON=0 took the
- *     last, 09) is refused in one line, status 2, and nothing is written. */
+ *     last, 09) is refused in one line, status 2, and nothing is written.
+ *   - A DEST that is not the target's own is left as it is: make classroom's
+ *     file never goes into a directory or over a device or a pipe (it was
+ *     renamed over them: DEST=/dev/full replaced the device), DEST=/ is
+ *     refused as any directory that holds something else.
+ *   - A DEST with a space in its path works. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -17,6 +22,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include "shell.h"
@@ -97,10 +103,71 @@ static void values_that_are_not_one_lesson_are_refused(void **state)
     }
 }
 
+static void a_dest_that_is_not_theirs_is_left_alone(void **state)
+{
+    (void)state;
+    char dir[PATH_LEN], command[3 * PATH_LEN];
+    abs_dir("make_targets_dest", dir, sizeof dir);
+    /* make classroom: a directory, a pipe, a name ending in '/' */
+    if (mkdir(path_join(dir, "d"), 0755) != 0)
+        fail_msg("mkdir failed");
+    write_text(path_join(dir, "d/keep.txt"), "keep me\n");
+    if (mkfifo(path_join(dir, "pipe"), 0644) != 0)
+        fail_msg("mkfifo failed");
+    snprintf(command, sizeof command, "sh tools/classroom.sh --dest '%s/d' 03", dir);
+    expect_one_line(command, 2, "is a directory: name the file to write");
+    snprintf(command, sizeof command, "sh tools/classroom.sh --dest '%s/d/' 03", dir);
+    expect_one_line(command, 2, "ends in '/'");
+    snprintf(command, sizeof command, "sh tools/classroom.sh --dest '%s/pipe' 03", dir);
+    expect_one_line(command, 2, "exists and is not a regular file");
+    struct stat st;
+    if (stat(path_join(dir, "pipe"), &st) != 0 || !S_ISFIFO(st.st_mode))
+        fail_msg("make classroom DEST=pipe replaced the pipe");
+    if (entries(path_join(dir, "d")) != 1 || entries(dir) != 2)
+        fail_msg("make classroom left a file beside its DEST");
+    /* make snapshot and make handout: DEST=/ is a directory that holds
+     * something else (it was read as an empty name, and the run went on). */
+    expect_refusal("sh tools/snapshot.sh --dest / 03", 2,
+                   "snapshot: error: DEST=/ exists and is not an earlier snapshot", false);
+    expect_refusal("sh tools/handout.sh --dest / 03", 2,
+                   "handout: error: DEST=/ exists and is not an earlier handout", false);
+    /* and a classroom file in a directory of its own is written */
+    snprintf(command, sizeof command, "sh tools/classroom.sh --dest '%s/d/t.json' 03", dir);
+    ShellResult r = run_shell(NULL, SHELL_TIMEOUT, "%s", command);
+    if (r.status != 0 || !file_exists(path_join(dir, "d/t.json")) || entries(path_join(dir, "d")) != 2)
+        fail_msg("`%s`: status %d\n%s", command, r.status, r.output);
+    shell_result_free(&r);
+}
+
+static void a_dest_with_a_space_works(void **state)
+{
+    (void)state;
+    char dir[PATH_LEN], command[5 * PATH_LEN + 256];
+    abs_dir("make_targets_space", dir, sizeof dir);
+    snprintf(command, sizeof command,
+             "mkdir -p '%s/a b' && sh tools/handout.sh --only --dest '%s/a b/h' 03 && "
+             "sh tools/snapshot.sh --dest '%s/a b/s' 03 && "
+             "sh tools/classroom.sh --dest '%s/a b/t.json' 03",
+             dir, dir, dir, dir);
+    ShellResult r = run_shell(NULL, SHELL_TIMEOUT, "%s", command);
+    if (r.status != 0)
+        fail_msg("`%s`: status %d\n%s", command, r.status, r.output);
+    shell_result_free(&r);
+    char sub[PATH_LEN + 8];
+    snprintf(sub, sizeof sub, "%s/a b", dir);
+    /* h, s and t.json, nothing else beside them */
+    if (entries(sub) != 3)
+        fail_msg("%s should hold h, s and t.json only", sub);
+    assert_true(file_exists(path_join(sub, "h/.handout")));
+    assert_true(file_exists(path_join(sub, "s/.snapshot")));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(values_that_are_not_one_lesson_are_refused),
+        cmocka_unit_test(a_dest_that_is_not_theirs_is_left_alone),
+        cmocka_unit_test(a_dest_with_a_space_works),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
