@@ -4,9 +4,15 @@
  *   make_obj knot OUT.obj [RINGS SIDES]     a finer or coarser torus knot
  *
  * The files read back with --obj give the same faces in the same order as
- * --scene SCENE, in the same objects and groups (`g decal` ...). Exit status: 0 written, 1 could not write, 2 bad usage. */
+ * --scene SCENE, in the same objects and groups (`g decal` ...). OUT.obj may
+ * be "-" (standard output), a device or a pipe: the OBJ then goes there
+ * without its materials, with a warning, since a .mtl has no place beside
+ * it; the summary line goes to standard error when the OBJ is on standard
+ * output. Exit status: 0 written, 1 could not write, 2 bad usage. */
 #include <errno.h>
 #include <stdarg.h>
+#include <sys/stat.h>
+#include <unistd.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -94,10 +100,21 @@ int main(int argc, char **argv)
         mesh_free(&m);
         return error_report(PROGRAM, &err, argc == 5 ? EXIT_USAGE : EXIT_RUN_FAILED);
     }
+    /* Standard output by any name ("-", /dev/stdout, the file it was sent
+     * to): what it holds is the OBJ alone. */
+    struct stat out_st, path_st;
+    bool on_stdout = is_stdout_name(argv[2]) ||
+                     (fstat(STDOUT_FILENO, &out_st) == 0 && stat(argv[2], &path_st) == 0 &&
+                      out_st.st_dev == path_st.st_dev && out_st.st_ino == path_st.st_ino);
+    bool stream = obj_path_is_stream(argv[2]);
     ok = mesh_write_obj(&m, argv[2], &err);
+    if (ok && stream && m.nmaterials > 0)
+        fprintf(stderr, PROGRAM ": warning: %s is not a file: the OBJ is written without its %d "
+                        "materials (a .mtl has no place beside it)\n",
+                argv[2], m.nmaterials);
     if (ok)
-        printf("%s: %d vertices, %d faces, %d materials\n", argv[2], m.nverts, m.nfaces,
-               m.nmaterials);
+        fprintf(on_stdout ? stderr : stdout, "%s: %d vertices, %d faces, %d materials\n", argv[2],
+                m.nverts, m.nfaces, stream ? 0 : m.nmaterials);
     mesh_free(&m);
     return ok ? EXIT_OK : error_report(PROGRAM, &err, EXIT_RUN_FAILED);
 }

@@ -71,8 +71,16 @@ bool mesh_parse_obj(Mesh *m, const char *text, size_t len, const char *name,
  * and, when there are materials, usemtl lines and a .mtl file beside it (path
  * with .obj replaced by .mtl), both atomically and as one output set: a
  * failure publishes neither, and a .mtl that is the OBJ file under another
- * name is refused. */
+ * name is refused. An OBJ sent to a stream (obj_path_is_stream) has no
+ * directory for its .mtl: it is written without materials (no mtllib, no
+ * usemtl), and no .mtl is written anywhere. */
 bool mesh_write_obj(const Mesh *m, const char *path, Error *err);
+/* True when path is "-" or names, links followed, standard output (a file it
+ * was sent to, as /dev/stdout is) or a file that exists and is neither a
+ * regular file nor a directory: a device (/dev/null) or a pipe. Its "x.mtl"
+ * would be no file beside it: "-.mtl" in the current directory,
+ * /dev/stdout.mtl and /dev/null.mtl in /dev. */
+bool obj_path_is_stream(const char *path);
 
 /* Newell's normal of a polygon (not normalised; zero for a degenerate one). */
 Vec3 polygon_normal(const Vec3 *pts, int n);

@@ -26,6 +26,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "file.h"
 
@@ -786,6 +787,17 @@ static bool write_mtl(const Mesh *m, const char *mtl_path, Error *err)
     return atomic_commit(&f, err);
 }
 
+bool obj_path_is_stream(const char *path)
+{
+    struct stat st, out;
+    if (is_stdout_name(path))
+        return true;
+    if (stat(path, &st) != 0)
+        return false;
+    return (!S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode)) ||
+           (fstat(STDOUT_FILENO, &out) == 0 && out.st_dev == st.st_dev && out.st_ino == st.st_ino);
+}
+
 static bool write_obj(const Mesh *m, const char *path, const char *mtl_path, Error *err)
 {
     AtomicFile f;
@@ -808,7 +820,7 @@ static bool write_obj(const Mesh *m, const char *path, const char *mtl_path, Err
         const NameSet *face_names = face->names >= 0 ? &m->sets[face->names] : NULL;
         write_names(f.fp, names, face_names);
         names = face_names;
-        if (face->material != material) {
+        if (mtl_path && face->material != material) {
             material = face->material;
             fprintf(f.fp, "usemtl%s%s\n", material >= 0 ? " " : "",
                     material >= 0 ? m->materials[material].name : "");
@@ -828,7 +840,7 @@ static bool write_obj(const Mesh *m, const char *path, const char *mtl_path, Err
 bool mesh_write_obj(const Mesh *m, const char *path, Error *err)
 {
     char *mtl_path = NULL;
-    if (m->nmaterials > 0) {
+    if (m->nmaterials > 0 && !obj_path_is_stream(path)) {
         mtl_path = mtl_path_for(path);
         if (!mtl_path)
             return error_set(err, "out of memory");

@@ -10,8 +10,12 @@
 #include <stdio.h>
 #include <string.h>
 
+#include <stdlib.h>
+#include <unistd.h>
+
 #include "harness/mesh_build.h"
 #include "harness/scene.h"
+#include "shell.h"
 #include "test_support.h"
 
 static void assert_usage_error(const char *const *args, const char *expected_line)
@@ -146,6 +150,52 @@ static void unwritable_output_fails_with_status_1(void **state)
     run_result_free(&r);
 }
 
+/* OUT.obj on standard output ("-", or /dev/stdout sent to a file): its .mtl
+ * has no place beside it. It was written as "-.mtl" in the current directory
+ * (and /dev/stdout.mtl, /dev/null.mtl in /dev), the OBJ named it, and the
+ * summary line went into the OBJ on standard output. Now the OBJ goes out
+ * alone, without mtllib or usemtl, it reads back, and a warning says so. */
+static void standard_output_gets_the_obj_alone(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("make_obj_stdout");
+    char here[4096], tools[4096 + 64];
+    if (!getcwd(here, sizeof here))
+        fail_msg("getcwd failed");
+    const char *tool_dir = getenv("TOOL_DIR") ? getenv("TOOL_DIR") : "build/tools";
+    snprintf(tools, sizeof tools, "%s%s%s", tool_dir[0] == '/' ? "" : here,
+             tool_dir[0] == '/' ? "" : "/", tool_dir);
+    const char *names[] = {"-", "/dev/stdout"};
+    for (int i = 0; i < 2; i++) {
+        ShellResult r = run_shell(dir, 60, "'%s/make_obj' cubes %s >m.obj 2>err.txt; echo $?; "
+                                           "ls -A; cat err.txt",
+                                  tools, names[i]);
+        char want[512];
+        snprintf(want, sizeof want,
+                 "0\nerr.txt\nm.obj\n"
+                 "make_obj: warning: %s is not a file: the OBJ is written without its 4 materials "
+                 "(a .mtl has no place beside it)\n"
+                 "%s: 28 vertices, 19 faces, 0 materials\n",
+                 names[i], names[i]);
+        if (strcmp(r.output, want) != 0)
+            fail_msg("make_obj cubes %s >m.obj:\n%s\nwant:\n%s", names[i], r.output, want);
+        shell_result_free(&r);
+        char *obj = read_text(path_join(dir, "m.obj"));
+        if (strstr(obj, "mtl") || strstr(obj, "vertices, 19 faces, 0"))
+            fail_msg("the OBJ on standard output names a .mtl or holds the summary:\n%.300s", obj);
+        free(obj);
+        Mesh m;
+        mesh_init(&m);
+        Error err;
+        if (!mesh_load_obj(&m, path_join(dir, "m.obj"), &err))
+            fail_msg("m.obj does not read back: %s", err.msg);
+        assert_int_equal(m.nfaces, 19);
+        mesh_free(&m);
+        remove(path_join(dir, "m.obj"));
+        remove(path_join(dir, "err.txt"));
+    }
+}
+
 static void help_lists_the_scenes(void **state)
 {
     (void)state;
@@ -165,6 +215,7 @@ int main(void)
         cmocka_unit_test(knot_takes_rings_and_sides),
         cmocka_unit_test(bad_command_lines_are_usage_errors),
         cmocka_unit_test(unwritable_output_fails_with_status_1),
+        cmocka_unit_test(standard_output_gets_the_obj_alone),
         cmocka_unit_test(help_lists_the_scenes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
