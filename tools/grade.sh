@@ -268,6 +268,15 @@ for lesson in "$@"; do
             printf '%s\t%s\n' "${b#*.}" "${b%%.*}"
         done >"$ldir/where"
         cut -f 2 "$ldir/where" | sort -u >"$ldir/bins"
+        # A test of the points file with no record cannot be judged: the
+        # records are not the teacher's whole run (not the student's zero).
+        lacking=$(awk -F '\t' 'FILENAME == ARGV[1] { have[$1] = 1; next } !($1 in have) { printf " %s", $1 }' \
+                      "$ldir/where" "$ldir/points")
+        if [ -n "$lacking" ]; then
+            echo "$prog: error: the records in $records/$lesson have no record of:$lacking; $lesson not graded (make grade-reference)" >&2
+            status=1
+            continue
+        fi
         while read -r bin; do
             [ -x "$build/tests/$lesson/$bin" ] || missing="$missing $bin"
         done <"$ldir/bins"
@@ -308,8 +317,19 @@ for lesson in "$@"; do
     # its test programs against their record (tools/submission-check.sh); if
     # one does, no test of the lesson runs, and each says why.
     refused=""
-    if [ "$mode" = reference ] &&
-        ! sh tools/submission-check.sh check "$build" "$lesson" "$records/$lesson/check" >"$ldir/refused" 2>&1; then
+    checked=0
+    if [ "$mode" = reference ]; then
+        sh tools/submission-check.sh check "$build" "$lesson" "$records/$lesson/check" >"$ldir/refused" 2>&1
+        checked=$?
+    fi
+    # (1: the submission is refused; anything else: the records are unusable,
+    # which is the grader's failure, not the student's.)
+    if [ "$checked" -ne 0 ] && [ "$checked" -ne 1 ]; then
+        echo "$prog: error: $lesson not graded: $(head -n 1 "$ldir/refused")" >&2
+        status=1
+        continue
+    fi
+    if [ "$checked" -eq 1 ]; then
         refused=1
         echo "$prog: $lesson is not judged:" >&2
         sed 's/^/  /' "$ldir/refused" >&2
@@ -418,7 +438,10 @@ for lesson in "$@"; do
             "$GRADE_JUDGE" $owner "$GRADE_RECORDS/$GRADE_LESSON/$bin.$name.obs" \
                 "$out.obs" "$tout" >>"$out.log"
             j=$?
-            if [ "$j" -eq 0 ] && [ "$st" -eq 0 ]; then v=pass
+            # 2: the judge could not judge: the teacher'"'"'s record is missing or
+            # malformed. The grading fails; the test is not the student'"'"'s zero.
+            if [ "$j" -eq 2 ]; then v=nojudge
+            elif [ "$j" -eq 0 ] && [ "$st" -eq 0 ]; then v=pass
             elif [ "$st" -eq 0 ] || [ "$j" -ne 1 ] || grep -q "^E " "$out.obs" 2>/dev/null; then v=fail
             else v=unfinished; fi ;;
         esac
@@ -428,9 +451,11 @@ for lesson in "$@"; do
     : >"$ldir/results"     # test <tab> pass|fail|crash <tab> binary
     while read -r bin; do mkdir -p "$ldir/out/$bin"; done <"$ldir/bins"
     seen=" " passed=" " # the tests with a line in results so far; those that passed
+    unjudged=""
     while read -r bin name; do
         read -r v st lim wall <"$ldir/run/$bin.$name.verdict" 2>/dev/null ||
             { v=unfinished; st=127; lim=$limit; wall=$((3 * limit)); }
+        if [ "$v" = nojudge ]; then unjudged="$unjudged $name"; v=fail; fi
         log="$ldir/run/$bin.$name.log"
         case $passed in *" $name "*) continue ;; esac
         # NUL and the bytes that are not plain text (and are not valid UTF-8
@@ -471,8 +496,15 @@ for lesson in "$@"; do
         seen="$seen$name "
         [ "$how" != pass ] || passed="$passed$name "
     done <"$ldir/jobs"
+    if [ -n "$unjudged" ]; then
+        echo "$prog: error: the records in $records/$lesson could not judge:$unjudged (missing or malformed: make grade-reference); the grading of $lesson failed" >&2
+        status=1
+    fi
     if [ "$mode" = record ]; then
-        if [ -n "$missing" ] || awk -F '\t' '$2 != "pass" { bad = 1 } END { exit !bad }' "$ldir/results"; then
+        # (A test of the points file that no program has did not pass either:
+        # judged without its record, it could not be graded.)
+        if [ -n "$missing" ] || awk -F '\t' 'FILENAME == ARGV[1] { if ($2 == "pass") ok[$1] = 1; else bad = 1; next }
+                                             !($1 in ok) { bad = 1 } END { exit !bad }' "$ldir/results" "$ldir/points"; then
             echo "$prog: error: the teacher's solution of $lesson does not pass every test (below): nothing is recorded for it" >&2
             rm -rf "$records/$lesson.new"
             status=1

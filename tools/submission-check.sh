@@ -11,7 +11,9 @@
 #       (each taught header's preprocessor lines)
 #   sh tools/submission-check.sh check BUILD LESSON DIR
 #       the student's build against them: one line per thing refused on
-#       stdout, and status 1 if there is one; 0 and nothing if all is well
+#       stdout, and status 1 if there is one; 0 and nothing if all is well;
+#       3 and one line when the records in DIR cannot be used (missing, or
+#       older than this grader): the grader's failure, not the submission's
 #
 # A taught file of the submission may not
 #   - define a global name that the test program or a library it loads
@@ -153,11 +155,11 @@ if [ "$what" = record ]; then
 fi
 
 # check
-tmp=$(mktemp "${TMPDIR:-/tmp}/submission-check.XXXXXX") || exit 1
+tmp=$(mktemp "${TMPDIR:-/tmp}/submission-check.XXXXXX") || exit 3
 trap 'rm -f "$tmp"' EXIT
 if [ ! -s "$dir/taught" ] || [ ! -f "$dir/calls" ] || [ ! -f "$dir/tests.calls" ] || [ ! -f "$dir/taken" ]; then
-    echo "the teacher's records of $lesson are older than this grader: make them again (make grade-reference)"
-    exit 1
+    echo "the teacher's records of $lesson in $dir are missing or older than this grader: make them again (make grade-reference)"
+    exit 3
 fi
 found=0
 refuse() { case $1 in "its headers") echo "the submission's headers $2" ;; *) echo "lessons/$lesson/$1: $2" ;; esac; found=1; }

@@ -638,6 +638,21 @@ static void expect_not_judged(const char *sum_c, const char *why)
     shell_result_free(&r);
 }
 
+/* make grade LESSON=06 against records that cannot judge (the teacher's
+ * solution as the submission): the grading fails, saying why, rather than
+ * scoring the tests it cannot judge 0 and ending with status 0. */
+static void expect_grading_fails(const char *spoil, const char *why)
+{
+    ShellResult r = shell_ok(tree, "rm -rf build/ref-bad && cp -R build/ref build/ref-bad && %s", spoil);
+    shell_result_free(&r);
+    r = run_shell(tree, SHELL_TIMEOUT,
+                  "make -j2 OPT=-O0 grade LESSON=06 TIME_LIMIT=5 REFERENCE=build/ref-bad");
+    if (r.status == 0 || !strstr(r.output, why))
+        fail_msg("records spoiled by `%s`: want a failed grading, \"%s\" (status %d):\n%s", spoil,
+                 why, r.status, r.output);
+    shell_result_free(&r);
+}
+
 /* The same, for a header of the submission (with the teacher's sum.c):
  * want_score its score line, or NULL and why it is not judged. */
 static void expect_header(const char *sum_h, const char *want_score, const char *why)
@@ -732,6 +747,15 @@ static void a_judged_lesson_cannot_be_forged(void **state)
         fail_msg("recording a wrong solution should fail (status %d):\n%s", r.status, r.output);
     shell_result_free(&r);
     assert_false(file_exists(path_join(tree, "build/ref2/06_sum")));
+
+    /* Records that cannot judge: a malformed one, a missing one, no record
+     * of what the solution calls. Each is the grader's failure. */
+    expect_grading_fails("for f in build/ref-bad/06_sum/*.sums_to_ten.obs; do echo x >\"$f\"; done",
+                         "could not judge: sums_to_ten");
+    expect_grading_fails("rm build/ref-bad/06_sum/*.sums_in_a_loop.obs",
+                         "have no record of: sums_in_a_loop");
+    expect_grading_fails("rm -r build/ref-bad/06_sum/check",
+                         "06_sum not graded: the teacher's records of 06_sum");
 }
 
 /* ---- make autograder: Gradescope's layout, simulated ---- */
