@@ -88,6 +88,20 @@ TEST_SRC   := $(sort $(filter-out tests/support/%,$(wildcard tests/*/test_*.c)))
 ifdef LESSON
 TEST_SRC   := $(filter tests/$(LESSON)%,$(TEST_SRC))
 endif
+# make test or update-expected with a LESSON= that names no tests, and
+# update-expected without one, are refused before anything is built (make
+# test ran nothing and said only "0 passed, 0 failed"; update-expected built
+# every test before it asked which lesson).
+ifneq ($(filter test update-expected,$(MAKECMDGOALS)),)
+ifeq ($(filter update-expected,$(MAKECMDGOALS))$(strip $(LESSON)),update-expected)
+$(error usage: make update-expected LESSON=NN (the lesson whose pictures to accept))
+endif
+ifneq ($(strip $(LESSON)),)
+ifeq ($(TEST_SRC),)
+$(error LESSON=$(LESSON) names no tests (tests/$(LESSON)*/test_*.c): give a lesson's number, e.g. LESSON=03)
+endif
+endif
+endif
 TEST_BIN   := $(patsubst tests/%.c,$(BUILD)/tests/%,$(TEST_SRC))
 
 DEPS_OK    := $(BUILD)/.deps-ok

@@ -163,5 +163,15 @@ if [ -n "$scratch" ] && [ "$failed" -ne 0 ]; then
     keep=1
     echo "run-tests: the tests' scratch is kept in $scratch ($link) until the next run"
 fi
+# Nothing ran: a fault of the command line, not a pass (status 1 as ever).
+if [ "$passed" -eq 0 ] && [ "$failed" -eq 0 ]; then
+    if [ $# -eq 0 ]; then
+        echo "run-tests: error: no test program to run" >&2
+    elif [ -n "${TEST_FILTER:-}" ]; then
+        echo "run-tests: error: no test is named '$TEST_FILTER' (TEST= takes a test's name; * and ? work)" >&2
+    else
+        echo "run-tests: error: no test ran" >&2
+    fi
+fi
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ] && [ "$passed" -gt 0 ]

@@ -11,7 +11,9 @@
  *     file never goes into a directory or over a device or a pipe (it was
  *     renamed over them: DEST=/dev/full replaced the device), DEST=/ is
  *     refused as any directory that holds something else.
- *   - A DEST with a space in its path works. */
+ *   - A DEST with a space in its path works.
+ *   - make test LESSON= naming no tests, and make update-expected without
+ *     LESSON=, are refused before anything is built (make -n shows it). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -162,12 +164,24 @@ static void a_dest_with_a_space_works(void **state)
     assert_true(file_exists(path_join(sub, "s/.snapshot")));
 }
 
+static void make_test_of_no_lesson_is_refused(void **state)
+{
+    (void)state;
+    expect_one_line("make --no-print-directory -n test LESSON=..", 2,
+                    "LESSON=.. names no tests (tests/..*/test_*.c): give a lesson's number");
+    expect_one_line("make --no-print-directory -n update-expected LESSON=nosuch", 2,
+                    "LESSON=nosuch names no tests");
+    expect_one_line("make --no-print-directory -n update-expected", 2,
+                    "usage: make update-expected LESSON=NN");
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(values_that_are_not_one_lesson_are_refused),
         cmocka_unit_test(a_dest_that_is_not_theirs_is_left_alone),
         cmocka_unit_test(a_dest_with_a_space_works),
+        cmocka_unit_test(make_test_of_no_lesson_is_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -188,10 +188,31 @@ static void a_link_someone_else_made_is_not_followed(void **state)
     free(text);
 }
 
+/* A run in which no test ran (TEST= naming none, no program at all) fails,
+ * and says why: it said only "0 passed, 0 failed". */
+static void a_run_of_no_test_says_so(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("run_tests_none");
+    const char *none = program(dir, "none", "echo '[  PASSED  ] 0 test(s).'");
+    ShellResult r = run_runner(dir, "TEST_FILTER=nosuch", none);
+    expect_count(1, r.status, "run-tests.sh, no test named nosuch: exit status");
+    if (!strstr(r.output, "run-tests: error: no test is named 'nosuch' (TEST= takes a test's name; "
+                          "* and ? work)\n0 passed, 0 failed\n"))
+        fail_msg("want the error line before \"0 passed, 0 failed\":\n%s", r.output);
+    shell_result_free(&r);
+    r = run_runner(dir, "", "");
+    expect_count(1, r.status, "run-tests.sh, no program: exit status");
+    if (!strstr(r.output, "run-tests: error: no test program to run\n"))
+        fail_msg("want \"no test program to run\":\n%s", r.output);
+    shell_result_free(&r);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(counts_and_order),
+        cmocka_unit_test(a_run_of_no_test_says_so),
         cmocka_unit_test(scratch_is_a_link_removed_after_a_pass_kept_after_a_failure),
         cmocka_unit_test(a_link_someone_else_made_is_not_followed),
     };
