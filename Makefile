@@ -22,6 +22,20 @@
 
 BUILD    ?= build
 CC       ?= cc
+
+# BUILD is removed whole by make clean and written by everything else: it may
+# be any directory of its own, but not the tree, a directory that holds it,
+# or one of the tree's own (make clean BUILD=lessons removed every lesson;
+# BUILD=lessons made lessons/lessons/ as the Makefile was read).
+build_path   = $(or $(realpath $(BUILD)),$(abspath $(BUILD)))
+TREE_ENTRIES := $(addprefix $(CURDIR)/,lessons common docs tests tools out Makefile README.md \
+                  .git .ci .gitignore .editorconfig)
+ifeq ($(strip $(BUILD)),)
+$(error BUILD is empty: it names the directory that make builds into and make clean removes)
+endif
+ifneq ($(filter / $(CURDIR) $(TREE_ENTRIES) $(addsuffix /%,$(TREE_ENTRIES)),$(build_path))$(filter $(build_path)/%,$(CURDIR)/),)
+$(error BUILD=$(BUILD) is the tree, holds it, or is one of its own files or directories: make clean would remove it; pick a directory of its own, such as build)
+endif
 OPT      ?= -O2 -g
 
 # Flags come in two kinds. OPT, CFLAGS, CPPFLAGS, LDFLAGS and LDLIBS are the

@@ -13,7 +13,9 @@
  *     refused as any directory that holds something else.
  *   - A DEST with a space in its path works.
  *   - make test LESSON= naming no tests, and make update-expected without
- *     LESSON=, are refused before anything is built (make -n shows it). */
+ *     LESSON=, are refused before anything is built (make -n shows it).
+ *   - BUILD may not be the tree, hold it, or be one of its own directories:
+ *     make clean BUILD=lessons removed every lesson. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -175,6 +177,23 @@ static void make_test_of_no_lesson_is_refused(void **state)
                     "usage: make update-expected LESSON=NN");
 }
 
+static void a_build_directory_of_the_trees_own_is_refused(void **state)
+{
+    (void)state;
+    const char *builds[] = {"lessons", "lessons/x", "tests/zz_build", "out", "/", "Makefile"};
+    char command[256], words[128];
+    for (size_t i = 0; i < sizeof builds / sizeof builds[0]; i++) {
+        snprintf(command, sizeof command, "make --no-print-directory -n clean BUILD=%s", builds[i]);
+        snprintf(words, sizeof words, "BUILD=%s is the tree, holds it, or is one of its own", builds[i]);
+        expect_one_line(command, 2, words);
+    }
+    expect_one_line("make --no-print-directory -n clean BUILD=", 2, "BUILD is empty");
+    /* Nothing was made on the way (the lessons' links, as the Makefile is read). */
+    assert_false(file_exists("lessons/x"));
+    assert_false(file_exists("lessons/lessons"));
+    assert_false(file_exists("tests/zz_build"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -182,6 +201,7 @@ int main(void)
         cmocka_unit_test(a_dest_that_is_not_theirs_is_left_alone),
         cmocka_unit_test(a_dest_with_a_space_works),
         cmocka_unit_test(make_test_of_no_lesson_is_refused),
+        cmocka_unit_test(a_build_directory_of_the_trees_own_is_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
