@@ -230,6 +230,19 @@ int main(int argc, char **argv)
         return usage_error("the time limit must be a number of seconds, above 0 and at most 86400");
     char **program = argv + a + 1;
 
+    /* --cpu-out is opened before the program runs: a FILE that cannot be
+     * written is said at once, with its reason, rather than after the run,
+     * when the program's own status would be lost to it. */
+    FILE *cpu_file = NULL;
+    if (cpu_out) {
+        cpu_file = fopen(cpu_out, "w");
+        if (!cpu_file) {
+            fprintf(stderr, "time_limit: error: cannot write %s: %s\n", cpu_out, strerror(errno));
+            return STATUS_OWN_FAILURE;
+        }
+        fcntl(fileno(cpu_file), F_SETFD, FD_CLOEXEC);
+    }
+
     int pipe_ends[2] = {-1, -1};
     if (output) {
         output_fd = open(output, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
@@ -289,10 +302,13 @@ int main(int argc, char **argv)
                 output_errno ? ": " : "", output_errno ? strerror(output_errno) : "");
         return STATUS_OWN_FAILURE;
     }
-    if (cpu_out) {
-        FILE *f = fopen(cpu_out, "w");
-        if (!f || fprintf(f, "%.3f\n", children_cpu_seconds()) < 0 || fclose(f) != 0) {
-            fprintf(stderr, "time_limit: error: cannot write %s\n", cpu_out);
+    if (cpu_file) {
+        errno = 0;
+        bool written = fprintf(cpu_file, "%.3f\n", children_cpu_seconds()) >= 0;
+        written = fclose(cpu_file) == 0 && written;
+        if (!written) {
+            fprintf(stderr, "time_limit: error: cannot write %s: %s\n", cpu_out,
+                    strerror(errno ? errno : EIO));
             return STATUS_OWN_FAILURE;
         }
     }

@@ -8,6 +8,7 @@
 #include <cmocka.h>
 
 #include <signal.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/types.h>
@@ -153,6 +154,37 @@ static void output_that_cannot_be_written_is_125(void **state)
     run_result_free(&r);
 }
 
+/* --cpu-out that cannot be written: said before the program runs, with the
+ * reason (it was said after the run, without one, the program's own status
+ * lost); one that can be written gets the seconds. */
+static void cpu_out_that_cannot_be_written_is_refused_before_the_run(void **state)
+{
+    (void)state;
+    const char *dir = test_dir("time_limit_cpu_out");
+    char ran[512], script[600], expected[700];
+    snprintf(ran, sizeof ran, "%s", path_join(dir, "ran"));
+    snprintf(script, sizeof script, "touch '%s'", ran);
+    const char *args[] = {"--cpu-out", dir, "10", "sh", "-c", script, NULL};
+    RunResult r = run_tool("time_limit", args);
+    snprintf(expected, sizeof expected, "time_limit: error: cannot write %s: Is a directory\n", dir);
+    if (r.status != 125 || strcmp(r.err, expected) != 0)
+        fail_msg("status %d, wanted 125 and \"%s\":\n%s", r.status, expected, r.err);
+    run_result_free(&r);
+    if (file_exists(ran))
+        fail_msg("the program ran, though its --cpu-out could not be written");
+    char cpu[512];
+    snprintf(cpu, sizeof cpu, "%s", path_join(dir, "cpu.txt"));
+    const char *good[] = {"--cpu-out", cpu, "10", "sh", "-c", "exit 3", NULL};
+    r = run_tool("time_limit", good);
+    assert_int_equal(r.status, 3);
+    run_result_free(&r);
+    char *text = read_text(cpu);
+    double seconds = -1;
+    if (sscanf(text, "%lf", &seconds) != 1 || seconds < 0)
+        fail_msg("--cpu-out wrote \"%s\"", text);
+    free(text);
+}
+
 static void missing_program_is_127(void **state)
 {
     (void)state;
@@ -204,6 +236,7 @@ int main(void)
         cmocka_unit_test(cpu_time_limit_stops_computing_not_waiting),
         cmocka_unit_test(output_is_kept_to_its_cap),
         cmocka_unit_test(output_that_cannot_be_written_is_125),
+        cmocka_unit_test(cpu_out_that_cannot_be_written_is_refused_before_the_run),
     };
     return cmocka_run_group_tests_name("tools: time_limit", tests, NULL, NULL);
 }
