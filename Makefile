@@ -428,6 +428,8 @@ handout:
 # test never runs an old build of the code.
 grade:
 	@test -n "$(GRADE_LESSONS)" || { echo "grade: error: no lesson LESSON=$(LESSON) in lessons/" >&2; exit 2; }
+	@sh tools/grade.sh --check $(if $(TIME_LIMIT),--time-limit "$(TIME_LIMIT)") \
+	    $(if $(REFERENCE),--reference "$(REFERENCE)") $(if $(TEST),--test "$(TEST)") $(GRADE_LESSONS)
 	@mkdir -p $(BUILD)/grade
 	@rm -f $(GRADE_TESTS) $(GRADE_LESSONS:%=$(BUILD)/bin/%)
 	@$(MAKE) --no-print-directory -k grade-build GRADE_WARNINGS_SHOWN=1 >$(BUILD)/grade/build.log 2>&1 || \

@@ -64,8 +64,10 @@ limit=${TIME_LIMIT:-10}
 only_test=""
 mode=self
 records=""
+check_only=0
 while [ $# -gt 0 ]; do
     case $1 in
+        --check) check_only=1; shift ;;
         --build) build=$2; shift 2 ;;
         --time-limit) limit=$2; shift 2 ;;
         --test) only_test=$2; shift 2 ;;
@@ -87,6 +89,24 @@ fi
 case $limit in
     ''|*[!0-9]*|0) echo "$prog: error: TIME_LIMIT=$limit: want a whole number of seconds, at least 1" >&2; exit 2 ;;
 esac
+# --check (make grade, before it removes and rebuilds the tests): the
+# command line and the records only, so that a bad TIME_LIMIT=, TEST= or
+# REFERENCE= is said at once, not after minutes of building.
+if [ "$check_only" -eq 1 ]; then
+    if [ "$mode" = reference ] && [ ! -d "$records" ]; then
+        echo "$prog: error: no records of the teacher's solution in $records (make them with --record)" >&2
+        exit 1
+    fi
+    if [ -n "$only_test" ]; then
+        for lesson in "$@"; do
+            awk -v t="$only_test" '!/^[ \t]*(#|$)/ && $1 == t { found = 1 } END { exit !found }' \
+                "tests/$lesson/points.txt" 2>/dev/null && exit 0
+        done
+        echo "$prog: error: no test $only_test in the points of $*" >&2
+        exit 2
+    fi
+    exit 0
+fi
 jobs=${GRADE_JOBS:-$(nproc 2>/dev/null || getconf _NPROCESSORS_ONLN 2>/dev/null || echo 1)}
 case $jobs in
     ''|*[!0-9]*|0) jobs=1 ;;

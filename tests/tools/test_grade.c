@@ -467,6 +467,35 @@ static void malformed_points_file_is_refused_with_its_line(void **state)
     write_text(points, POINTS);
 }
 
+/* make grade with a TIME_LIMIT=, REFERENCE= or TEST= it cannot take: said
+ * at once, the lesson's program not removed and built again first (it was,
+ * for minutes on the series, before the refusal). */
+static void bad_grade_values_are_refused_before_the_build(void **state)
+{
+    (void)state;
+    const char *bin = path_join(tree, "build/bin/06_sum");
+    ShellResult r = shell_ok(tree, "make -j2 OPT=-O0 build/bin/06_sum");
+    shell_result_free(&r);
+    struct stat before;
+    assert_int_equal(stat(bin, &before), 0);
+    const char *bad[][2] = {
+        {"TIME_LIMIT=abc", "grade: error: TIME_LIMIT=abc: want a whole number of seconds"},
+        {"REFERENCE=build/no-records", "grade: error: no records of the teacher's solution in build/no-records"},
+        {"TEST=no_such_test", "grade: error: no test no_such_test in the points of 06_sum"},
+    };
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        r = run_shell(tree, SHELL_TIMEOUT, "make OPT=-O0 grade LESSON=06 %s", bad[i][0]);
+        if (r.status == 0 || !strstr(r.output, bad[i][1]))
+            fail_msg("make grade %s: want \"%s\" (status %d):\n%s", bad[i][0], bad[i][1], r.status,
+                     r.output);
+        shell_result_free(&r);
+        struct stat after;
+        if (stat(bin, &after) != 0 || after.st_mtim.tv_sec != before.st_mtim.tv_sec ||
+            after.st_mtim.tv_nsec != before.st_mtim.tv_nsec)
+            fail_msg("make grade %s removed or rebuilt build/bin/06_sum before refusing", bad[i][0]);
+    }
+}
+
 /* ---- make handout ---- */
 
 static void handout_replaces_the_region_by_stub_and_hint(void **state)
@@ -1026,6 +1055,7 @@ int main(void)
         cmocka_unit_test_teardown(code_that_does_not_compile_scores_zero, restore_tree),
         cmocka_unit_test_teardown(one_test_alone_sets_the_exit_status, restore_tree),
         cmocka_unit_test_teardown(malformed_points_file_is_refused_with_its_line, restore_tree),
+        cmocka_unit_test_teardown(bad_grade_values_are_refused_before_the_build, restore_tree),
         cmocka_unit_test_teardown(handout_replaces_the_region_by_stub_and_hint, restore_tree),
         cmocka_unit_test_teardown(handout_stubs_the_other_lessons_when_asked, restore_tree),
         cmocka_unit_test_teardown(handout_refuses_a_tree_that_gives_a_solution_line_away, restore_tree),
