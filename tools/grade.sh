@@ -126,6 +126,21 @@ if [ "$mode" != self ]; then
         echo "$prog: error: no records of the teacher's solution in $records (make them with --record)" >&2
         exit 1
     fi
+    # --record replaces DIR/<lesson> whole: only records are replaced (what
+    # --record writes: check/, *.obs, *.cpu). REFERENCE=tests replaced
+    # tests/<lesson>, the lesson's tests, by its records.
+    if [ "$mode" = record ]; then
+        for lesson in "$@"; do
+            [ -e "$records/$lesson" ] || [ -L "$records/$lesson" ] || continue
+            other=$(cd "$records/$lesson" 2>/dev/null && for f in * .[!.]*; do
+                        case $f in '*'|'.[!.]*'|check|*.obs|*.cpu) ;; *) echo "$f"; break ;; esac
+                    done) || other="?"
+            if [ -L "$records/$lesson" ] || [ ! -d "$records/$lesson" ] || [ -n "$other" ]; then
+                echo "$prog: error: $records/$lesson exists and is not records of the teacher's solution (it holds ${other:-something else}): pick another REFERENCE" >&2
+                exit 2
+            fi
+        done
+    fi
 fi
 gdir=${GRADE_DIR:-$build/grade}
 mkdir -p "$gdir" || exit 1

@@ -496,6 +496,28 @@ static void bad_grade_values_are_refused_before_the_build(void **state)
     }
 }
 
+/* make grade-reference REFERENCE=dir replaces dir/<lesson> by the records:
+ * never a directory that holds anything else. REFERENCE=tests replaced
+ * tests/06_sum, the lesson's tests and points, by its records. */
+static void records_never_replace_other_files(void **state)
+{
+    (void)state;
+    ShellResult r = run_shell(tree, SHELL_TIMEOUT,
+                              "make -j2 OPT=-O0 grade-reference LESSON=06 REFERENCE=tests");
+    bool kept = file_exists(path_join(tree, "tests/06_sum/test_sum.c")) &&
+                file_exists(path_join(tree, "tests/06_sum/points.txt"));
+    if (!kept) {
+        /* put the made-up lesson's tests back for the tests after this one */
+        write_text(path_join(tree, "tests/06_sum/test_sum.c"), TEST_SUM_C);
+        write_text(path_join(tree, "tests/06_sum/points.txt"), SUM_POINTS);
+    }
+    if (r.status == 0 || !kept ||
+        !strstr(r.output, "tests/06_sum exists and is not records of the teacher's solution"))
+        fail_msg("make grade-reference REFERENCE=tests: status %d, tests/06_sum %s:\n%s", r.status,
+                 kept ? "kept" : "replaced", r.output);
+    shell_result_free(&r);
+}
+
 /* ---- make handout ---- */
 
 static void handout_replaces_the_region_by_stub_and_hint(void **state)
@@ -1056,6 +1078,7 @@ int main(void)
         cmocka_unit_test_teardown(one_test_alone_sets_the_exit_status, restore_tree),
         cmocka_unit_test_teardown(malformed_points_file_is_refused_with_its_line, restore_tree),
         cmocka_unit_test_teardown(bad_grade_values_are_refused_before_the_build, restore_tree),
+        cmocka_unit_test_teardown(records_never_replace_other_files, restore_tree),
         cmocka_unit_test_teardown(handout_replaces_the_region_by_stub_and_hint, restore_tree),
         cmocka_unit_test_teardown(handout_stubs_the_other_lessons_when_asked, restore_tree),
         cmocka_unit_test_teardown(handout_refuses_a_tree_that_gives_a_solution_line_away, restore_tree),
