@@ -53,6 +53,10 @@ elif [ -e "$dest" ] && [ ! -f "$dest" ]; then
     echo "$prog: error: DEST=$dest exists and is not a regular file" >&2
     exit 2
 fi
+if [ -e "$dest" ] && [ "$dest" -ef "$points" ]; then
+    echo "$prog: error: DEST=$dest is $points, which the tests are read from" >&2
+    exit 2
+fi
 dir=$(dirname "$dest")
 if [ -e "$dir" ] && [ ! -d "$dir" ]; then
     echo "$prog: error: DEST=$dest: $dir is not a directory" >&2

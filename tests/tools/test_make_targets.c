@@ -124,6 +124,18 @@ static void a_dest_that_is_not_theirs_is_left_alone(void **state)
     expect_one_line(command, 2, "ends in '/'");
     snprintf(command, sizeof command, "sh tools/classroom.sh --dest '%s/pipe' 03", dir);
     expect_one_line(command, 2, "exists and is not a regular file");
+    /* nor over the points file it reads, by any name */
+    char *points = read_text("tests/03_perspective_z/points.txt");
+    snprintf(command, sizeof command,
+             "sh tools/classroom.sh --dest tests/03_perspective_z/../03_perspective_z/points.txt 03");
+    expect_one_line(command, 2, "is tests/03_perspective_z/points.txt, which the tests are read from");
+    char *after = read_text("tests/03_perspective_z/points.txt");
+    if (strcmp(points, after) != 0) {
+        write_text("tests/03_perspective_z/points.txt", points);
+        fail_msg("make classroom replaced the points file it reads");
+    }
+    free(points);
+    free(after);
     struct stat st;
     if (stat(path_join(dir, "pipe"), &st) != 0 || !S_ISFIFO(st.st_mode))
         fail_msg("make classroom DEST=pipe replaced the pipe");
