@@ -19,7 +19,8 @@ set -eu
 site=${1:-build/site}
 wasm=${2:-build/wasm/bin}
 edition=${3:-full}
-here=$(pwd)/tools/site
+top=$(pwd)
+here=$top/tools/site
 case $site in /*) ;; *) site=$(pwd)/$site ;; esac
 case $wasm in /*) ;; *) wasm=$(pwd)/$wasm ;; esac
 rm -rf "$site"
@@ -151,15 +152,23 @@ for l in lessons/[0-9][0-9]_*/main.c; do
     cp -p "$wasm/$l.wasm" "$site/wasm/"
 done
 cp -p "$here/wasm/run.js" "$wasm/pako_deflate.min.js" "$site/wasm/"
+# The files of the tree a command of the pages may read, which the page's
+# worker puts in the lesson's working directory (inputs.json): the examples,
+# and each expected picture of tests/expected/ a page names (--compare).
+for f in $(grep -ohE 'tests/expected/[A-Za-z0-9_./-]+\.png' $sources | sort -u); do
+    [ -f "$top/$f" ] || continue
+    mkdir -p "$site/$(dirname "$f")"
+    cp -p "$top/$f" "$site/$f"
+done
 {
     printf '['
     sep=''
-    for f in $(cd docs/examples && find . -type f | sed 's#^\./##' | sort); do
+    for f in $(find docs/examples -type f | sort) $(cd "$site" && find tests -type f 2>/dev/null | sort); do
         printf '%s"%s"' "$sep" "$f"
         sep=','
     done
     printf ']\n'
-} > "$site/docs/examples/index.json"
+} > "$site/inputs.json"
 {
     printf 'window.SEARCH_INDEX = [\n'
     cat "$site"/search/*.json | sed 's/$/,/'

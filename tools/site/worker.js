@@ -2,15 +2,17 @@
 // starts it). A page's Run button sends {id, lesson, args}; the worker loads
 // that lesson's browser build (wasm/NN.js and NN.wasm, from make wasm) once,
 // runs it with wasm/run.js's runLesson in an in-memory file system holding
-// the pages' example files (docs/examples/) and every file the page's
-// earlier runs wrote (out/...), as a terminal in the tree would, and answers
+// the files of the tree the pages' commands read (inputs.json: the examples
+// of docs/examples/, the expected pictures of tests/expected/ the pages
+// name) and every file the page's earlier runs wrote (out/...), as a
+// terminal in the tree would, and answers
 // {id, status, printed, stdout, stderr, written}.
 "use strict";
 self.importScripts("wasm/run.js", "wasm/pako_deflate.min.js");
 
 const lessons = new Map(); // lesson -> {factory, wasm}
 const kept = new Map();    // path -> bytes: what the page's runs wrote
-let examples = null;       // [[path, bytes]]
+let inputs = null;         // [[path, bytes]]: the tree's files (inputs.json)
 
 async function bytesOf(url) {
   const r = await fetch(url);
@@ -24,10 +26,10 @@ async function load(lesson) {
     self.importScripts(`wasm/${lesson}.js`);
     lessons.set(lesson, {factory: self.Lesson, wasm: await bytesOf(`wasm/${lesson}.wasm`)});
   }
-  if (!examples) {
-    const list = await (await fetch("docs/examples/index.json")).json();
-    examples = [];
-    for (const name of list) examples.push([`docs/examples/${name}`, await bytesOf(`docs/examples/${name}`)]);
+  if (!inputs) {
+    const list = await (await fetch("inputs.json")).json();
+    inputs = [];
+    for (const name of list) inputs.push([name, await bytesOf(name)]);
   }
   return lessons.get(lesson);
 }
@@ -36,7 +38,7 @@ self.onmessage = async (e) => {
   const {id, lesson, args} = e.data;
   try {
     const {factory, wasm} = await load(lesson);
-    const r = await self.runLesson(factory, wasm, args, examples.concat([...kept]));
+    const r = await self.runLesson(factory, wasm, args, inputs.concat([...kept]));
     for (const [p, b] of r.written) kept.set(p, b);
     self.postMessage({id, status: r.status, printed: r.printed, stdout: r.stdout,
                       stderr: r.stderr, written: r.written});

@@ -10,10 +10,11 @@
 //   - the theme button turns dark to light and back, and a reload keeps it;
 //   - every Run button of a page, pressed in the page's order, runs the
 //     lesson in the page as the native one runs in a directory of its own
-//     (the pages' examples, then what the page's earlier commands wrote):
-//     the same status, stdout and stderr, and the same files, byte for
-//     byte; lesson 10 natively on one thread with plain C blocks, as in
-//     the page, and refused in one line there when asked for more;
+//     (the tree's docs/examples/ and tests/expected/, then what the page's
+//     earlier commands wrote): the same status, stdout and stderr, and the
+//     same files, byte for byte; lesson 10 natively on one thread with
+//     plain C blocks, as in the page, and refused in one line there when
+//     asked for more;
 //   - every live figure responds: a steps figure draws its steps, its slider
 //     turns the picture, and a pixel clicked shows what the native --trace
 //     prints for it; a flags figure, at first and after each choice turned,
@@ -203,7 +204,10 @@ async function main() {
     const dir = path.join(work, p.replace(/[/.]/g, "_"));
     fs.rmSync(dir, {recursive: true, force: true});
     fs.mkdirSync(dir, {recursive: true});
-    fs.cpSync(path.resolve("docs/examples"), path.join(dir, "docs/examples"), {recursive: true});
+    // The files of the tree a page's command may read: its examples and
+    // the expected pictures (--compare tests/expected/...).
+    for (const d of ["docs/examples", "tests/expected"])
+      fs.cpSync(path.resolve(d), path.join(dir, d), {recursive: true});
     for (const w of widgets) {
       const cmd = await w.$eval(".run-cmd", (i) => i.value);
       const [program, ...args] = cmd.split(/\s+/);
