@@ -35,13 +35,19 @@ local function escape_html(s)
   return (s:gsub("&", "&amp;"):gsub("<", "&lt;"):gsub(">", "&gt;"):gsub('"', "&quot;"))
 end
 
+-- The page runs only the lessons. A file that another program of the page
+-- makes (build/tools/make_obj knot out/knot.obj), one that no lesson command
+-- before it names, is not there in the page: a lesson command that reads it
+-- gets no Run button.
+local named, made_outside = {}, {}
+
 local function lesson_commands(block)
   local console = block.classes:includes("console")
   if not (console or block.classes:includes("sh")) then
     return {}
   end
   local found = {}
-  for line in (block.text .. "\n"):gmatch("([^\n]*)\n") do
+  for line in (block.text:gsub("%s*\\\n%s*", " ") .. "\n"):gmatch("([^\n]*)\n") do
     local cmd = line
     if console then
       cmd = line:match("^%$ (.*)$")
@@ -49,7 +55,17 @@ local function lesson_commands(block)
     if cmd then
       cmd = cmd:gsub("%s+#.*$", ""):gsub("%s+$", "")
       local lesson = cmd:match("^build/bin/(%d%d_[%w_]+)")
-      if lesson and not cmd:find("[|&;<>()$`\\'\"*?]") then
+      local outside = false
+      for word in cmd:gmatch("%S+") do
+        if lesson then
+          outside = outside or made_outside[word] or false
+          named[word] = true
+        elseif cmd:match("^build/") and word:find("/") and not word:match("^build/")
+               and not word:match("^%-") and not named[word] then
+          made_outside[word] = true
+        end
+      end
+      if lesson and not outside and not cmd:find("[|&;<>()$`\\'\"*?]") then
         table.insert(found, {lesson = lesson, cmd = cmd})
       end
     end

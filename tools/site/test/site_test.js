@@ -12,9 +12,9 @@
 //     lesson in the page as the native one runs in a directory of its own
 //     (the tree's docs/examples/ and tests/expected/, then what the page's
 //     earlier commands wrote): the same status, stdout and stderr, and the
-//     same files, byte for byte; lesson 10 natively on one thread with
-//     plain C blocks, as in the page, and refused in one line there when
-//     asked for more;
+//     same files, byte for byte, and none reads a file not there; lesson
+//     10 natively on one thread with plain C blocks, as in the page, and
+//     refused in one line there when asked for more;
 //   - every live figure responds: a steps figure draws its steps, its slider
 //     turns the picture, and a pixel clicked shows what the native --trace
 //     prints for it; a flags figure, at first and after each choice turned,
@@ -217,6 +217,9 @@ async function main() {
       runs++;
       const label = `${p}: Run ${cmd}`;
       if (!r || r.error) { check(false, `${label}: ${r ? r.error : "no result"}`); continue; }
+      // A Run button whose command cannot run in the page, since a file it
+      // reads is not there, is a button that does nothing.
+      check(!/No such file or directory/.test(r.stderr), `${label}: reads a file not in the page:\n${r.stderr}`);
       if (notInTheBrowser(args)) {
         check(r.status === 2 && r.stderr.split("\n").filter(Boolean).length === 1 && !r.stdout,
               `${label}: should be refused in the page in one line (status ${r.status})`);

@@ -31,7 +31,9 @@ function pageCommands() {
   const out = [];
   for (const page of fs.readdirSync("docs").filter((f) => /^\d\d_.*\.md$/.test(f)).sort()) {
     let lang = null;
-    for (const line of fs.readFileSync(path.join("docs", page), "utf8").split("\n")) {
+    // A line ending in \ goes on on the next one.
+    const text = fs.readFileSync(path.join("docs", page), "utf8").replace(/\s*\\\n\s*/g, " ");
+    for (const line of text.split("\n")) {
       const fence = line.match(/^```(\w*)/);
       if (fence) { lang = lang === null ? fence[1] : null; continue; }
       if (lang !== "sh" && lang !== "console") continue;
