@@ -6,7 +6,8 @@
 //   - every link into the site reaches a file, and its #fragment an id there;
 //   - each page of the book in reading order links the one before and after;
 //   - the search finds each book page from words of one of its headings;
-//   - book.pdf and book.epub hold every page of the book, by its title;
+//   - book.pdf and book.epub hold every page of the book, by its title, and
+//     nothing of the printed book is wider than its page;
 //   - the theme button turns dark to light and back, and a reload keeps it;
 //   - every Run button of a page, pressed in the page's order, runs the
 //     lesson in the page as the native one runs in a directory of its own
@@ -183,6 +184,22 @@ async function main() {
     check(flat(pdf.stdout || "").includes(flat(t)), `book.pdf lacks the page "${t}"`);
     check(flat(epub.stdout || "").includes(flat(t)), `book.epub lacks the page "${t}"`);
   }
+  // Nothing of the printed book is wider than its column on a Letter page
+  // (816 px): chromium would shrink every page of book.pdf to fit it, and
+  // still cut off what is beyond the edge (a wide table's last column).
+  const print = await browser.newPage({viewport: {width: 816, height: 1056}});
+  await print.goto(base + "book-print.html");
+  await print.emulateMedia({media: "print"});
+  const wide = await print.evaluate(() => {
+    // (A space that ends a line of inline code hangs past it: less than 8 px.)
+    const right = document.body.getBoundingClientRect().right + 8;
+    return Array.from(document.querySelectorAll("body *"))
+      .filter((e) => e.getBoundingClientRect().right > right && !e.closest("nav"))
+      .map((e) => e.tagName + ": " + e.textContent.replace(/\s+/g, " ").trim().slice(0, 60));
+  });
+  for (const w of wide.slice(0, 10)) check(false, `book.pdf: wider than the page: ${w}`);
+  check(wide.length === 0, `book.pdf: ${wide.length} elements wider than the page`);
+  await print.close();
 
   // The theme: a click turns it, a reload keeps it, a second click turns it back.
   await page.goto(base + "docs/02_zbuffer.html");
