@@ -125,8 +125,14 @@ async function main() {
     for (const e of problems) check(false, `${p}: ${e}`);
     check(problems.length === 0, `${p} loads cleanly`);
     const imgs = await page.$$eval("img", (list) => list.map((i) => ({
-      src: i.getAttribute("src"), ok: i.complete && i.naturalWidth > 0})));
-    for (const i of imgs) { images++; check(i.ok, `${p}: picture ${i.src} is not drawn`); }
+      src: i.getAttribute("src"), ok: i.complete && i.naturalWidth > 0,
+      width: Number(i.getAttribute("width")), shown: i.getBoundingClientRect().width})));
+    for (const i of imgs) {
+      images++;
+      check(i.ok, `${p}: picture ${i.src} is not drawn`);
+      // A picture given its width (a thumbnail) is drawn that wide.
+      if (i.width) check(Math.abs(i.shown - i.width) < 1, `${p}: picture ${i.src} is ${i.shown} px wide, not ${i.width}`);
+    }
     const hrefs = await page.$$eval("a[href]", (list) => list.map((a) => a.href));
     for (const h of new Set(hrefs)) {
       const url = new URL(h);
@@ -186,7 +192,8 @@ async function main() {
   }
   // Nothing of the printed book is wider than its column on a Letter page
   // (816 px): chromium would shrink every page of book.pdf to fit it, and
-  // still cut off what is beyond the edge (a wide table's last column).
+  // still cut off what is beyond the edge (a wide table's last column); and
+  // a picture given its width (a thumbnail) is printed that wide.
   const print = await browser.newPage({viewport: {width: 816, height: 1056}});
   await print.goto(base + "book-print.html");
   await print.emulateMedia({media: "print"});
@@ -195,10 +202,15 @@ async function main() {
     const right = document.body.getBoundingClientRect().right + 8;
     return Array.from(document.querySelectorAll("body *"))
       .filter((e) => e.getBoundingClientRect().right > right && !e.closest("nav"))
-      .map((e) => e.tagName + ": " + e.textContent.replace(/\s+/g, " ").trim().slice(0, 60));
+      .map((e) => "wider than the page: " + e.tagName + ": " +
+                  e.textContent.replace(/\s+/g, " ").trim().slice(0, 60))
+      .concat(Array.from(document.querySelectorAll("img[width]"))
+        .filter((i) => Math.abs(i.getBoundingClientRect().width - Number(i.getAttribute("width"))) >= 1)
+        .map((i) => `picture ${i.getAttribute("src")} is ${i.getBoundingClientRect().width} px wide, ` +
+                    `not ${i.getAttribute("width")}`));
   });
-  for (const w of wide.slice(0, 10)) check(false, `book.pdf: wider than the page: ${w}`);
-  check(wide.length === 0, `book.pdf: ${wide.length} elements wider than the page`);
+  for (const w of wide.slice(0, 10)) check(false, `book.pdf: ${w}`);
+  check(wide.length === 0, `book.pdf: ${wide.length} elements wider than the page or squeezed`);
   await print.close();
 
   // The theme: a click turns it, a reload keeps it, a second click turns it back.
