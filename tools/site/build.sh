@@ -84,8 +84,8 @@ nav=$(printf '%s\n' "$book" | awk -F'|' -v lessons=0 '
         print "<a href=\"ROOTbook.epub\">EPUB</a>"
     }')
 
-page() { # source prev_source next_source
-    src=$1 prev_src=$2 next_src=$3
+page() { # source prev_source next_source [more_markdown]
+    src=$1 prev_src=$2 next_src=$3 more=${4:-}
     out=$(html_of "$src")
     root=$(root_of "$out")
     title=$(sed -n '1s/^# //p' "$src")
@@ -105,7 +105,7 @@ page() { # source prev_source next_source
             --variable "next_title=$(sed -n '1s/^# //p' "$next_src")"
     fi
     mkdir -p "$site/$(dirname "$out")"
-    pandoc "$@" -o "$site/$out" "$src"
+    pandoc "$@" -o "$site/$out" "$src" ${more:+"$more"}
 }
 
 # The book's pages, each with the one before and after it.
@@ -123,8 +123,20 @@ set +f
 # The student edition carries only the files the pages link to: a lesson's
 # extras may show an earlier lesson's solution (lesson 03's naive rule is
 # lesson 02's), and no page needs them.
+# In the full edition a lesson's page ends with a link to each of its own
+# files, which the book holds beside it: a browser lists no directory.
+files_md=$(mktemp)
 for readme in lessons/*/README.md; do
-    page "$readme" "" ""
+    if [ "$edition" = student ]; then
+        page "$readme" "" ""
+    else
+        {
+            printf '\n## Files of this lesson\n\nEach opens as text.\n\n'
+            (cd "$(dirname "$readme")" && ls *.[ch] 2>/dev/null; ls extras/*.[ch] 2>/dev/null) |
+                sed 's#.*#- [&](&)#'
+        } > "$files_md"
+        page "$readme" "" "" "$files_md"
+    fi
     if [ "$edition" = student ]; then
         grep -o '](\.\./[0-9][0-9]_[a-z_0-9]*/[^)]*\.[ch])' "$readme" | sed 's#^](\.\./##; s#)$##' |
             while read -r f; do
@@ -139,6 +151,7 @@ for readme in lessons/*/README.md; do
         cp -p "$(dirname "$readme")"/extras/*.[ch] "$site/$(dirname "$readme")/extras/" 2>/dev/null || true
     fi
 done
+rm -f "$files_md"
 for d in images diffs examples data; do
     [ -d "docs/$d" ] && cp -Rp "docs/$d" "$site/docs/"
 done

@@ -4,6 +4,7 @@
 //   - it loads with no console error, no script error and no failed request;
 //   - every picture on it is drawn (complete, with a width);
 //   - every link into the site reaches a file, and its #fragment an id there;
+//     and every file of a lesson the book holds is linked from a page;
 //   - each page of the book in reading order links the one before and after;
 //   - the search finds each book page from words of one of its headings;
 //   - book.pdf and book.epub hold every page of the book, by its title, and
@@ -119,6 +120,7 @@ async function main() {
 
   const pages = htmlFiles(site);
   let links = 0, images = 0;
+  const reached = new Set(); // every file a link of a page reaches
   for (const p of pages) {
     problems = [];
     await page.goto(base + p, {waitUntil: "load"});
@@ -142,12 +144,23 @@ async function main() {
       }
       links++;
       const file = fileOf(url);
+      reached.add(file);
       if (!fs.existsSync(file)) { check(false, `${p}: link ${h} reaches no file`); continue; }
       const id = decodeURIComponent(url.hash.slice(1));
       if (id && file.endsWith(".html")) check(hasId(file, id), `${p}: link ${h}: no id "${id}" there`);
       else check(true, "");
     }
   }
+
+  // Every file of a lesson that the book holds is linked from a page: a
+  // browser lists no directory, and a file no page links to is lost.
+  (function lessonFiles(dir) {
+    for (const e of fs.readdirSync(dir, {withFileTypes: true})) {
+      const f = path.join(dir, e.name);
+      if (e.isDirectory()) lessonFiles(f);
+      else if (/\.[ch]$/.test(e.name)) check(reached.has(f), `${path.relative(site, f)}: no page links to it`);
+    }
+  })(path.join(site, "lessons"));
 
   // The book in reading order, from the sidebar of its first page.
   await page.goto(base + "index.html");
