@@ -61,8 +61,12 @@
     if (e.key === "Escape") { input.value = ""; box.hidden = true; }
     if (e.key === "Enter") { var a = box.querySelector("a"); if (a) a.click(); }
   });
+  /* "/" goes to the search, unless it is typed into a field (a Run
+   * command line: build/bin/NN --out out/x.png). */
   document.addEventListener("keydown", function (e) {
-    if (e.key === "/" && document.activeElement !== input) { e.preventDefault(); input.focus(); }
+    var a = document.activeElement;
+    var typing = a && (/^(INPUT|TEXTAREA|SELECT)$/.test(a.tagName) || a.isContentEditable);
+    if (e.key === "/" && !typing) { e.preventDefault(); input.focus(); }
   });
   document.addEventListener("click", function (e) {
     if (!box.contains(e.target) && e.target !== input) box.hidden = true;

@@ -9,6 +9,7 @@
 //   - the search finds each book page from words of one of its headings;
 //   - book.pdf and book.epub hold every page of the book, by its title, and
 //     nothing of the printed book is wider than its page;
+//   - "/" goes to the search, but not from a Run command line, which takes it;
 //   - the theme button turns dark to light and back, and a reload keeps it;
 //   - every Run button of a page, pressed in the page's order, runs the
 //     lesson in the page as the native one runs in a directory of its own
@@ -225,6 +226,19 @@ async function main() {
   for (const w of wide.slice(0, 10)) check(false, `book.pdf: ${w}`);
   check(wide.length === 0, `book.pdf: ${wide.length} elements wider than the page or squeezed`);
   await print.close();
+
+  // "/" goes to the search from the page, but is typed as itself into a
+  // Run command line.
+  await page.goto(base + "docs/02_zbuffer.html");
+  await page.keyboard.press("/");
+  check(await page.evaluate(() => document.activeElement.id) === "search", "\"/\" does not go to the search");
+  const cmdLine = await page.$(".run-cmd");
+  const typed = (await cmdLine.evaluate((i) => i.value)) + " --out out/mine.png";
+  await cmdLine.click();
+  await page.keyboard.press("End");
+  await page.keyboard.type(" --out out/mine.png");
+  check(await cmdLine.evaluate((i) => i.value) === typed,
+        `a Run command line typed into reads "${await cmdLine.evaluate((i) => i.value)}"`);
 
   // The theme: a click turns it, a reload keeps it, a second click turns it back.
   await page.goto(base + "docs/02_zbuffer.html");
