@@ -481,7 +481,7 @@ static void bad_grade_values_are_refused_before_the_build(void **state)
     const char *bad[][2] = {
         {"TIME_LIMIT=abc", "grade: error: TIME_LIMIT=abc: want a whole number of seconds"},
         {"REFERENCE=build/no-records", "grade: error: no records of the teacher's solution in build/no-records"},
-        {"TEST=no_such_test", "grade: error: no test no_such_test in the points of 06_sum"},
+        {"TEST=no_such_test", "grade: error: no test no_such_test in tests/06_sum/points.txt"},
     };
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
         r = run_shell(tree, SHELL_TIMEOUT, "make OPT=-O0 grade LESSON=06 %s", bad[i][0]);
