@@ -24,17 +24,20 @@ BUILD    ?= build
 CC       ?= cc
 
 # BUILD is removed whole by make clean and written by everything else: it may
-# be any directory of its own, but not the tree, a directory that holds it,
-# or one of the tree's own (make clean BUILD=lessons removed every lesson;
-# BUILD=lessons made lessons/lessons/ as the Makefile was read).
-build_path   = $(or $(realpath $(BUILD)),$(abspath $(BUILD)))
-TREE_ENTRIES := $(addprefix $(CURDIR)/,lessons common docs tests tools out Makefile README.md \
-                  .git .ci .gitignore .editorconfig)
+# be any directory of its own below the top (tools/lesson-tree.sh refuses an
+# absolute one or one with ..), but not the top itself or one of the tree's
+# own entries (make clean BUILD=lessons removed every lesson; BUILD=lessons
+# made lessons/lessons/ as the Makefile was read). Judged by its first
+# component alone, not by the tree's path, which may hold spaces.
+TREE_ENTRIES := lessons common docs tests tools out Makefile README.md .git .ci .gitignore .editorconfig
+build_top    := $(firstword $(filter-out .,$(subst /, ,$(BUILD))))
 ifeq ($(strip $(BUILD)),)
 $(error BUILD is empty: it names the directory that make builds into and make clean removes)
 endif
-ifneq ($(filter / $(CURDIR) $(TREE_ENTRIES) $(addsuffix /%,$(TREE_ENTRIES)),$(build_path))$(filter $(build_path)/%,$(CURDIR)/),)
+ifeq ($(filter /%,$(BUILD)),)
+ifneq ($(if $(build_top),$(filter $(build_top),$(TREE_ENTRIES)),top),)
 $(error BUILD=$(BUILD) is the tree, holds it, or is one of its own files or directories: make clean would remove it; pick a directory of its own, such as build)
+endif
 endif
 OPT      ?= -O2 -g
 

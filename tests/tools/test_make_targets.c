@@ -192,7 +192,7 @@ static void make_test_of_no_lesson_is_refused(void **state)
 static void a_build_directory_of_the_trees_own_is_refused(void **state)
 {
     (void)state;
-    const char *builds[] = {"lessons", "lessons/x", "tests/zz_build", "out", "/", "Makefile"};
+    const char *builds[] = {"lessons", "./lessons/x", "tests/zz_build", "out", ".", "Makefile"};
     char command[256], words[128];
     for (size_t i = 0; i < sizeof builds / sizeof builds[0]; i++) {
         snprintf(command, sizeof command, "make --no-print-directory -n clean BUILD=%s", builds[i]);
@@ -206,6 +206,24 @@ static void a_build_directory_of_the_trees_own_is_refused(void **state)
     assert_false(file_exists("tests/zz_build"));
 }
 
+/* The series in a directory whose path holds a space (a student's
+ * "My Documents") reads its Makefile and would build: the check of BUILD
+ * above once took the tree's path apart at the space and refused build. */
+static void a_tree_in_a_path_with_a_space_reads_its_makefile(void **state)
+{
+    (void)state;
+    char dir[PATH_LEN], command[3 * PATH_LEN + 256];
+    abs_dir("make_targets_tree_space", dir, sizeof dir);
+    snprintf(command, sizeof command,
+             "mkdir -p '%s/a b/t' && cp -R Makefile common lessons tools '%s/a b/t/' && "
+             "cd '%s/a b/t' && make --no-print-directory -n build/bin/02_zbuffer >/dev/null",
+             dir, dir, dir);
+    ShellResult r = run_shell(NULL, SHELL_TIMEOUT, "%s", command);
+    if (r.status != 0)
+        fail_msg("make -n in a tree under '%s/a b': status %d\n%s", dir, r.status, r.output);
+    shell_result_free(&r);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -214,6 +232,7 @@ int main(void)
         cmocka_unit_test(a_dest_with_a_space_works),
         cmocka_unit_test(make_test_of_no_lesson_is_refused),
         cmocka_unit_test(a_build_directory_of_the_trees_own_is_refused),
+        cmocka_unit_test(a_tree_in_a_path_with_a_space_reads_its_makefile),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
