@@ -92,14 +92,33 @@
     out.textContent = "running " + m[1] + " in the page...";
     ask(m[1], words.slice(1), function (r) { showResult(widget, r); });
   }
-  /* The lesson on args, on the page's one worker; then done(result). */
+  /* The lesson on args, on the page's one worker; then done(result), which
+   * says {error} when the worker cannot start or stops: a page opened as a
+   * file (file://) may not start one. */
   function ask(lesson, args, done) {
     if (!worker) {
-      worker = new Worker(root + "worker.js");
+      try {
+        worker = new Worker(root + "worker.js");
+      } catch (e) {
+        done({error: location.protocol === "file:"
+          ? "a page opened as a file cannot run the lessons: serve the book " +
+            "(make site-serve) and read it at http://127.0.0.1:8000/"
+          : String(e && e.message || e)});
+        return;
+      }
       worker.onmessage = function (e) {
         var d = waiting[e.data.id];
         delete waiting[e.data.id];
         if (d) d(e.data);
+      };
+      worker.onerror = function (e) {
+        e.preventDefault();
+        var stopped = waiting;
+        waiting = {};
+        worker = null;
+        Object.keys(stopped).forEach(function (id) {
+          stopped[id]({error: "the page's worker stopped: " + (e.message || "it could not load")});
+        });
       };
     }
     var id = ++calls;
@@ -156,7 +175,10 @@
         steps = files.map(function (f) {
           return URL.createObjectURL(new Blob([f[1]], {type: "image/png"}));
         });
-        if (!steps.length) { start.textContent = "could not draw it here"; return; }
+        if (!steps.length) {
+          start.textContent = "could not draw it here" + (r.error ? ": " + r.error : "");
+          return;
+        }
         img = document.createElement("img");
         img.className = "figure-picture";
         img.alt = "the picture after the faces drawn so far; click a pixel to trace it";

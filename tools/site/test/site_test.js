@@ -10,6 +10,7 @@
 //   - book.pdf and book.epub hold every page of the book, by its title, and
 //     nothing of the printed book is wider than its page;
 //   - "/" goes to the search, but not from a Run command line, which takes it;
+//   - a page opened as a file, where no lesson can run, says so at Run;
 //   - the theme button turns dark to light and back, and a reload keeps it;
 //   - every Run button of a page, pressed in the page's order, runs the
 //     lesson in the page as the native one runs in a directory of its own
@@ -239,6 +240,18 @@ async function main() {
   await page.keyboard.type(" --out out/mine.png");
   check(await cmdLine.evaluate((i) => i.value) === typed,
         `a Run command line typed into reads "${await cmdLine.evaluate((i) => i.value)}"`);
+
+  // A page opened as a file cannot start the worker: Run says so, and how
+  // to read the book instead, rather than "running" for ever.
+  const asFile = await browser.newPage();
+  await asFile.goto("file://" + path.join(site, "docs/02_zbuffer.html"));
+  const fileRun = await asFile.$(".run");
+  await fileRun.$eval(".run-button", (b) => b.click());
+  const said = await asFile.waitForFunction((el) => el.getAttribute("data-state") === "done", fileRun,
+                                            {timeout: 10000})
+    .then(() => fileRun.$eval(".run-out", (o) => o.textContent), () => "(still running)");
+  check(/make site-serve/.test(said), `a page opened as a file says, at Run: ${said}`);
+  await asFile.close();
 
   // The theme: a click turns it, a reload keeps it, a second click turns it back.
   await page.goto(base + "docs/02_zbuffer.html");
