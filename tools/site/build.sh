@@ -93,6 +93,7 @@ page() { # source prev_source next_source [more_markdown]
     set -- --from gfm --to html5 --standalone --template "$here/template.html" \
         --toc --toc-depth 2 --highlight-style pygments --lua-filter "$here/links.lua" \
         --metadata "pagetitle=$title" --metadata "page_url=$out" \
+        --metadata "site_dir=$site" \
         --metadata "search_out=$site/search/$(printf '%s' "$out" | tr / _).json" \
         --variable "root=$root" \
         --variable "nav=$(printf '%s\n' "$nav" | sed "s#ROOT#$root#g; s#data-page=\"$out\"#data-page=\"$out\" aria-current=\"page\"#")"
@@ -108,6 +109,34 @@ page() { # source prev_source next_source [more_markdown]
     pandoc "$@" -o "$site/$out" "$src" ${more:+"$more"}
 }
 
+# The code the book holds, before its pages, which link a file they name in
+# code when the book holds it (links.lua): each lesson's files beside its
+# page, and common/. The student edition holds only the files the lessons'
+# pages link to (the files each inherits): a lesson's extras may show an
+# earlier lesson's solution (lesson 03's naive rule is lesson 02's), and no
+# page needs them.
+for readme in lessons/*/README.md; do
+    if [ "$edition" = student ]; then
+        grep -o '](\.\./[0-9][0-9]_[a-z_0-9]*/[^)]*\.[ch])' "$readme" | sed 's#^](\.\./##; s#)$##' |
+            while read -r f; do
+                mkdir -p "$site/lessons/$(dirname "$f")"
+                cp -p "lessons/$f" "$site/lessons/$f"
+            done
+        continue
+    fi
+    mkdir -p "$site/$(dirname "$readme")"
+    cp -p "$(dirname "$readme")"/*.[ch] "$site/$(dirname "$readme")/" 2>/dev/null || true
+    if [ -d "$(dirname "$readme")/extras" ]; then
+        mkdir -p "$site/$(dirname "$readme")/extras"
+        cp -p "$(dirname "$readme")"/extras/*.[ch] "$site/$(dirname "$readme")/extras/" 2>/dev/null || true
+    fi
+done
+if [ "$edition" != student ]; then
+    mkdir -p "$site/common/harness"
+    cp -p common/*.[ch] "$site/common/"
+    cp -p common/harness/*.[ch] "$site/common/harness/"
+fi
+
 # The book's pages, each with the one before and after it.
 sources=$(printf '%s\n' "$book" | cut -d'|' -f1)
 prev=""
@@ -119,37 +148,21 @@ for src in $sources; do
 done
 set +f
 # The lessons' own pages (what each inherits, and from where), outside the
-# reading order, and the files they and the pages link to.
-# The student edition carries only the files the pages link to: a lesson's
-# extras may show an earlier lesson's solution (lesson 03's naive rule is
-# lesson 02's), and no page needs them.
-# In the full edition a lesson's page ends with a link to each of its own
-# files, which the book holds beside it: a browser lists no directory.
+# reading order. In the full edition a lesson's page ends with a link to
+# each of its own files, which the book holds beside it: a browser lists no
+# directory.
 files_md=$(mktemp)
 for readme in lessons/*/README.md; do
     if [ "$edition" = student ]; then
         page "$readme" "" ""
-    else
-        {
-            printf '\n## Files of this lesson\n\nEach opens as text.\n\n'
-            (cd "$(dirname "$readme")" && ls *.[ch] 2>/dev/null; ls extras/*.[ch] 2>/dev/null) |
-                sed 's#.*#- [&](&)#'
-        } > "$files_md"
-        page "$readme" "" "" "$files_md"
-    fi
-    if [ "$edition" = student ]; then
-        grep -o '](\.\./[0-9][0-9]_[a-z_0-9]*/[^)]*\.[ch])' "$readme" | sed 's#^](\.\./##; s#)$##' |
-            while read -r f; do
-                mkdir -p "$site/lessons/$(dirname "$f")"
-                cp -p "lessons/$f" "$site/lessons/$f"
-            done
         continue
     fi
-    cp -p "$(dirname "$readme")"/*.[ch] "$site/$(dirname "$readme")/" 2>/dev/null || true
-    if [ -d "$(dirname "$readme")/extras" ]; then
-        mkdir -p "$site/$(dirname "$readme")/extras"
-        cp -p "$(dirname "$readme")"/extras/*.[ch] "$site/$(dirname "$readme")/extras/" 2>/dev/null || true
-    fi
+    {
+        printf '\n## Files of this lesson\n\nEach opens as text.\n\n'
+        (cd "$(dirname "$readme")" && ls *.[ch] 2>/dev/null; ls extras/*.[ch] 2>/dev/null) |
+            sed 's#.*#- [&](&)#'
+    } > "$files_md"
+    page "$readme" "" "" "$files_md"
 done
 rm -f "$files_md"
 for d in images diffs examples data; do

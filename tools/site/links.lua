@@ -23,8 +23,47 @@ local function html_of(target)
   return target
 end
 
+-- A file of a lesson or of common/ named in code (`lessons/02_zbuffer/main.c`,
+-- `common/target.h`) links to that file when the book holds it (in the
+-- directory the metadata field site_dir names, where build.sh copies them
+-- first; the student edition holds only the files the lessons inherit), and
+-- a lesson's own directory (`lessons/02_zbuffer/`) to its page: so the
+-- pages' lists of the files to read open them.
+local function up_from(page) -- the way up from a page of the site to its top
+  return (page:gsub("[^/]*$", ""):gsub("[^/]+/", "../"))
+end
+
+local site_dir, up = nil, ""
+
+local function exists(path)
+  local f = io.open(path, "r")
+  if f then f:close() end
+  return f ~= nil
+end
+
+function Code(el)
+  if not site_dir then
+    return nil
+  end
+  local t = el.text
+  if (t:match("^lessons/%d%d_[%w_]+/[%w_/]*%.[ch]$") or t:match("^common/[%w_/]*%.[ch]$"))
+     and exists(site_dir .. "/" .. t) then
+    return pandoc.Link({el}, up .. t)
+  end
+  if t:match("^lessons/%d%d_[%w_]+/$") and exists(t .. "README.md") then
+    return pandoc.Link({el}, up .. t .. "index.html")
+  end
+  return nil
+end
+
 function Link(el)
   el.target = html_of(el.target)
+  -- A link does not hold another (code already linked, above).
+  local content = pandoc.List()
+  for _, x in ipairs(el.content) do
+    if x.t == "Link" then content:extend(x.content) else content:insert(x) end
+  end
+  el.content = content
   return el
 end
 
@@ -184,3 +223,12 @@ function Pandoc(doc)
   f:close()
   return doc
 end
+
+-- The metadata first (site_dir, and the page's way up), then the page.
+return {
+  {Meta = function(meta)
+    site_dir = meta.site_dir and pandoc.utils.stringify(meta.site_dir) or nil
+    up = up_from(meta.page_url and pandoc.utils.stringify(meta.page_url) or "")
+  end},
+  {Code = Code, Link = Link, RawBlock = RawBlock, CodeBlock = CodeBlock, Pandoc = Pandoc},
+}

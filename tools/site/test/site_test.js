@@ -4,7 +4,8 @@
 //   - it loads with no console error, no script error and no failed request;
 //   - every picture on it is drawn (complete, with a width);
 //   - every link into the site reaches a file, and its #fragment an id there;
-//     and every file of a lesson the book holds is linked from a page;
+//     and every file of a lesson the book holds is linked from a page, and
+//     from wherever a page names it in code;
 //   - each page of the book in reading order links the one before and after;
 //   - the search finds each book page from words of one of its headings;
 //   - book.pdf and book.epub hold every page of the book, by its title, and
@@ -137,6 +138,11 @@ async function main() {
       // A picture given its width (a thumbnail) is drawn that wide.
       if (i.width) check(Math.abs(i.shown - i.width) < 1, `${p}: picture ${i.src} is ${i.shown} px wide, not ${i.width}`);
     }
+    // A file of the tree the book holds, named in code, opens from there.
+    const named = await page.$$eval("article code", (list) => list.filter((c) => !c.closest("a, pre"))
+      .map((c) => c.textContent).filter((t) => /^(lessons\/\d\d_\w+\/[\w/]*|common\/[\w/]*)\.[ch]$/.test(t)));
+    for (const f of new Set(named))
+      check(!fs.existsSync(path.join(site, f)), `${p}: \`${f}\` is not a link to the file the book holds`);
     const hrefs = await page.$$eval("a[href]", (list) => list.map((a) => a.href));
     for (const h of new Set(hrefs)) {
       const url = new URL(h);
