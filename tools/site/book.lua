@@ -7,7 +7,7 @@
 -- a link to a page, or to a heading of one, goes there inside the document;
 -- a picture's path is taken from the top of the tree; a link to any other
 -- file of the tree (a diff, a lesson's file), which a book cannot hold,
--- keeps its text and points at the file in the HTML book instead.
+-- keeps its text, and is no longer a link.
 
 local page, dir, stem
 
