@@ -54,6 +54,16 @@ static int compare_with_reference(FILE *out, const Image *picture, const char *r
     return d.differing ? EXIT_IMAGES_DIFFER : EXIT_OK;
 }
 
+bool compare_reference_readable(const char *ref_path, int width, int height, Error *err)
+{
+    Image ref;
+    Error why;
+    if (!image_read_png_sized(&ref, ref_path, width, height, &why))
+        return error_set(err, "--compare: %s", why.msg);
+    image_free(&ref);
+    return true;
+}
+
 int compare_picture(FILE *out, const Image *picture, const char *ref_path, const char *out_path,
                     Error *err)
 {

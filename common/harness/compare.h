@@ -26,6 +26,11 @@
  * any other name gets ".diff.png" added. False when buf is too small. */
 bool compare_diff_path(const char *out_path, char *buf, size_t size);
 
+/* Whether the PNG at ref_path can be read and is width x height: checked
+ * before anything is drawn, so that a run whose reference cannot be read
+ * fails before its summary says "wrote" of files it will not publish. */
+bool compare_reference_readable(const char *ref_path, int width, int height, Error *err);
+
 /* Compares picture (this run's) with the PNG at ref_path, prints the line on
  * out and writes the diff picture beside out_path (compare_diff_path). */
 int compare_picture(FILE *out, const Image *picture, const char *ref_path, const char *out_path,

@@ -59,6 +59,10 @@ bool inspect_begin(Inspection *in, const Render *r, Target *t, const Rasterizer 
     *in = fresh;
     if (opt->trace_set)
         target_trace_pixel(t, opt->trace_x, opt->trace_y);
+    if (opt->compare && !opt->out)
+        return error_set(err, "--compare: there is no --out picture to compare");
+    if (opt->compare && !compare_reference_readable(opt->compare, t->width, t->height, err))
+        return false;
     if (!opt->steps_dir)
         return true;
     if (r->mesh.nfaces > STEPS_MAX_FACES)

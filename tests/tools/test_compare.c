@@ -92,6 +92,15 @@ static void one_changed_pixel_exits_3_with_count_and_box(void **state)
     image_free(&d);
 }
 
+/* A reference that cannot be used stops the run before it draws: no summary
+ * says "wrote" of a picture that is then not published, and none is. */
+static void expect_nothing_said_written(const RunResult *r, const char *out)
+{
+    if (strstr(r->out, "wrote"))
+        fail_msg("the run failed, yet its summary says it wrote:\n%s", r->out);
+    assert_false(file_exists(out));
+}
+
 static void different_sizes_fail_with_both_sizes(void **state)
 {
     (void)state;
@@ -110,6 +119,7 @@ static void different_sizes_fail_with_both_sizes(void **state)
     snprintf(want, sizeof want,
              "02_zbuffer: error: --compare: %s is 20x10 but the picture is 40x20\n", ref);
     assert_string_equal(r.err, want);
+    expect_nothing_said_written(&r, out);
     run_result_free(&r);
 }
 
@@ -126,11 +136,12 @@ static void missing_reference_fails_with_its_name(void **state)
     snprintf(want, sizeof want,
              "02_zbuffer: error: --compare: cannot read %s: No such file or directory\n", ref);
     assert_string_equal(r.err, want);
+    expect_nothing_said_written(&r, out);
     run_result_free(&r);
 }
 
-/* --out is written before REF is read, and the diff picture after: naming one
- * file twice would compare the picture with itself, or destroy the reference. */
+/* --out and the diff picture replace their files as the run ends, after REF
+ * is read: naming one file twice would destroy the reference. */
 static void reference_that_out_would_overwrite_is_refused(void **state)
 {
     (void)state;
