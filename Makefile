@@ -227,7 +227,7 @@ run: $(BINS)
 # TEST=name becomes TEST_FILTER, which every test binary hands to cmocka's
 # test filter (tests/support/test_hooks.c): only the tests of that name run.
 test: $(BINS) $(TOOLS) $(TEST_BIN) $(FUZZ_REPLAY) $(FAIL_ALLOC)
-	@TEST_FILTER='$(TEST)' BIN_DIR=$(BUILD)/bin TOOL_DIR=$(BUILD)/tools TEST_OUTPUT=$(BUILD)/test-output \
+	@TEST_FILTER="$${TEST-}" BIN_DIR=$(BUILD)/bin TOOL_DIR=$(BUILD)/tools TEST_OUTPUT=$(BUILD)/test-output \
 	    sh tools/run-tests.sh $(TEST_BIN)
 
 update-expected: $(BINS) $(TOOLS) $(TEST_BIN)
@@ -432,14 +432,14 @@ handout:
 grade:
 	@test -n "$(GRADE_LESSONS)" || { echo "grade: error: no lesson LESSON=$(LESSON) in lessons/" >&2; exit 2; }
 	@sh tools/grade.sh --check $(if $(TIME_LIMIT),--time-limit "$(TIME_LIMIT)") \
-	    $(if $(REFERENCE),--reference "$(REFERENCE)") $(if $(TEST),--test "$(TEST)") $(GRADE_LESSONS)
+	    $(if $(REFERENCE),--reference "$(REFERENCE)") $(if $(TEST),--test "$$TEST") $(GRADE_LESSONS)
 	@mkdir -p $(BUILD)/grade
 	@rm -f $(GRADE_TESTS) $(GRADE_LESSONS:%=$(BUILD)/bin/%)
 	@$(MAKE) --no-print-directory -k grade-build GRADE_WARNINGS_SHOWN=1 >$(BUILD)/grade/build.log 2>&1 || \
 	    { cat $(BUILD)/grade/build.log; echo "grade: the build failed (above): what did not build scores 0"; }
 	@sh tools/grade.sh --build "$(BUILD)" $(if $(TIME_LIMIT),--time-limit "$(TIME_LIMIT)") \
 	    $(if $(REFERENCE),--reference "$(REFERENCE)") \
-	    $(if $(TEST),--test "$(TEST)") $(GRADE_LESSONS)
+	    $(if $(TEST),--test "$$TEST") $(GRADE_LESSONS)
 
 grade-build: $(BUILD)/tools/time_limit $(BINS) $(TOOLS) $(GRADE_TESTS)
 

@@ -168,6 +168,11 @@ static void a_dest_with_a_space_works(void **state)
     ShellResult r = run_shell(NULL, SHELL_TIMEOUT, "%s", command);
     if (r.status != 0)
         fail_msg("`%s`: status %d\n%s", command, r.status, r.output);
+    /* the snapshot's hint runs as printed: the path quoted */
+    char hint[PATH_LEN + 64];
+    snprintf(hint, sizeof hint, "build it with: make -C '%s/a b/s'\n", dir);
+    if (!strstr(r.output, hint))
+        fail_msg("the snapshot's hint should quote its path (%s):\n%s", hint, r.output);
     shell_result_free(&r);
     char sub[PATH_LEN + 8];
     snprintf(sub, sizeof sub, "%s/a b", dir);
