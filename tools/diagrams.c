@@ -17,7 +17,7 @@
  *                            from above, with 3, 2, 1 and 0 corners in front:
  *                            what is drawn and its corners (the test clips the
  *                            same triangles with lesson 05's clip_to_plane)
- *   06_depth_curve.png       900 x 580  window depth z_w against view depth d,
+ *   06_depth_curve.png       960 x 580  window depth z_w against view depth d,
  *                            near 1, far 100, in the standard and the reversed
  *                            mapping (docs/conventions.md), and a zoom on d from
  *                            90 to 92 with the unorm16 codes stored there
@@ -800,14 +800,14 @@ static void draw_clipping_cases(Image *im)
 
 /* ---- 06: window depth against view depth ------------------------------------ */
 
-#define E06_WIDTH 900
+#define E06_WIDTH 960
 #define E06_HEIGHT 580
 #define E06_LEFT 90 /* the main plot's frame (read by the test) */
 #define E06_RIGHT 520
 #define E06_TOP 140
 #define E06_BOTTOM 480
-#define E06_ZOOM_LEFT 620 /* the zoom's frame (read by the test) */
-#define E06_ZOOM_RIGHT 860
+#define E06_ZOOM_LEFT 680 /* the zoom's frame (read by the test) */
+#define E06_ZOOM_RIGHT 920
 #define E06_NEAR 1.0 /* the planes of both plots (read by the test) */
 #define E06_FAR 100.0
 #define E06_ZOOM_D0 90.0 /* the zoom: d from 90 to 92, z_w over the codes there */
@@ -901,6 +901,13 @@ static void draw_depth_curve(Image *im)
         line(im, x, E06_BOTTOM, x, E06_BOTTOM + 6, 0.5, 0, AXIS_COLOUR);
         snprintf(text, sizeof text, "%g", d);
         text_at(im, (int)lround(x) - scaled_width(text, TEXT_SCALE) / 2, E06_BOTTOM + 12, text,
+                TEXT_SCALE, AXIS_COLOUR);
+    }
+    for (int k = 0; k < 2; k++) { /* z_w at the zoom's bottom and top */
+        double z = k ? zoom_z1() : zoom_z0(), y = zoom_y(z);
+        line(im, E06_ZOOM_LEFT - 6, y, E06_ZOOM_LEFT, y, 0.5, 0, AXIS_COLOUR);
+        snprintf(text, sizeof text, "%.5f", z);
+        text_at(im, E06_ZOOM_LEFT - 12 - scaled_width(text, TEXT_SCALE), (int)lround(y) - 7, text,
                 TEXT_SCALE, AXIS_COLOUR);
     }
     long codes = lround(nearbyint(standard_z(E06_ZOOM_D1) * E06_UNORM16) -

@@ -63,8 +63,8 @@ static const Point HEXAGON[6] = {{5.25, 0.75}, {9.5, 2.25}, {10.75, 6.0},
 #define E06_RIGHT 520
 #define E06_TOP 140
 #define E06_BOTTOM 480
-#define E06_ZOOM_LEFT 620
-#define E06_ZOOM_RIGHT 860
+#define E06_ZOOM_LEFT 680
+#define E06_ZOOM_RIGHT 920
 #define E06_NEAR 1.0
 #define E06_FAR 100.0
 static const Rgb STANDARD_COLOUR = {255, 150, 50};
@@ -95,7 +95,7 @@ static void diagrams_are_written_at_their_documented_sizes(void **state)
         {"03_depth_along_a_row.png", 820, 520},
         {"04_edge_walk.png", 820, 600},
         {"05_clipping_cases.png", 920, 420},
-        {"06_depth_curve.png", 900, 580},
+        {"06_depth_curve.png", 960, 580},
         {"07_bias.png", 940, 520},
         {"08_z_modes.png", 940, 590},
         {"09_tile_bound.png", 940, 560},
