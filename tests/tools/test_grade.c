@@ -839,6 +839,7 @@ static void build_image(void)
 typedef struct {
     double score;
     char *output; /* results.json's output, and the tests' outputs after it */
+    char *log;    /* run_autograder's own output, as the teacher sees it: the build's and the grade's logs */
     double seconds;
     char dir[4096]; /* where it was graded: submission/ and results/ */
 } Graded;
@@ -869,6 +870,8 @@ static Graded autograde(const char *name, const char *const *files)
     g.seconds = seconds_since(&t0);
     if (r.status != 0)
         fail_msg("run_autograder (%s): status %d\n%s", name, r.status, r.output);
+    g.log = strdup(r.output);
+    assert_non_null(g.log);
     shell_result_free(&r);
     char *text = read_text(path_join(dir, "results/results.json"));
     JsonValue v;
@@ -989,9 +992,11 @@ static void autograder_cannot_be_forged_and_takes_any_shape(void **state)
             assert_string_equal(before.output, graded.output);
             shell_result_free(&graded);
         }
-        if (g.score != cases[i].score)
-            fail_msg("the %s submission scored %g, want %g:\n%s", cases[i].name, g.score,
-                     cases[i].score, g.output);
+        if (g.score != cases[i].score) { /* (whole: fail_msg cuts a message short) */
+            fprintf(stderr, "results.json:\n%s\nrun_autograder said:\n%s\n", g.output, g.log);
+            fail_msg("the %s submission scored %g, want %g (results.json and run_autograder's "
+                     "own output above)", cases[i].name, g.score, cases[i].score);
+        }
         if (g.seconds > 50)
             fail_msg("the %s submission took %.0f s: over its total limit", cases[i].name, g.seconds);
         /* The first line says which files were graded. */
@@ -1003,6 +1008,7 @@ static void autograder_cannot_be_forged_and_takes_any_shape(void **state)
         if (strstr(g.output, "(n + 1)"))
             fail_msg("the %s submission's results show the solution:\n%s", cases[i].name, g.output);
         free(g.output);
+        free(g.log);
         expect_no_student_process(cases[i].name);
     }
     ShellResult after = shell_ok(image, "cd template && find tests/expected -type f | sort | xargs md5sum");
